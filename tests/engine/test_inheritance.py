@@ -186,7 +186,7 @@ def test_a_method_of_a_fb_derived_from_one_without_overrides_is_called_directly(
         ),
         (
             "FUNCTION x : INT\nx := THIS^.x;\nEND_FUNCTION\n",
-            [("ST-UNKNOWN-VAR", "x/body", "THIS^ is only known in a function block and its methods")],
+            [("ST-UNKNOWN-VAR", "x/body", "THIS^ is only known in a function block, a program and their methods")],
         ),
     ],
 )

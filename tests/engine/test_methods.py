@@ -206,15 +206,18 @@ def test_method_declaration_and_call_errors(method, call, expected):
     assert errors(text) == [expected]
 
 
-def test_only_a_function_block_has_methods():
+def test_a_function_has_no_methods():
+    """A function block and a program have methods (CODESYS; tests/engine/test_program_methods.py), a FUNCTION none."""
     from ladderlab.model.project import Method, Pou, Project
 
     project = Project(
         name="p",
-        pous=[Pou(name="Main", kind="program", language="st", methods=[Method(name="M", body="")])],
+        pous=[
+            Pou(name="F", kind="function", language="st", return_type="INT", body="F := 1;", methods=[Method(name="M")])
+        ],
     )
     assert [(d.code, d.file, d.message) for d in build_project(project).diagnostics] == [
-        ("ST-DECL", "Main.M/declarations", "only a function block has methods, not a program")
+        ("ST-DECL", "F.M/declarations", "only a function block or a program has methods, not a function")
     ]
 
 

@@ -85,6 +85,43 @@ def test_unsplittable_st_text_is_kept_as_json(ws: Workspace) -> None:
     assert sorted(p.name for p in (ws.folder("p") / "pous").iterdir()) == ["Draft.st"]
 
 
+def test_a_program_with_methods_is_stored_as_json_and_comes_back_running(ws: Workspace) -> None:
+    """Issue 25 item 5: a PROGRAM with a METHOD and a PROPERTY (CODESYS) is ``pous/<name>.st.json`` (its IEC file
+    would not carry them) and loads back equal; the loaded project runs: Main: Add(2) then THIS^.Add(3) and the
+    property's SET ``Half := 1`` (count := 1 * 2) each scan, so count is 0 + 2 + 3 -> 2 after scan 1 (the SET runs
+    last), 2 + 5 -> 2 again; ``got`` reads the GET: 2 / 2 = 1."""
+    from ladderlab.model.project import Accessor, Method, Property
+    from ladderlab.simulation.build import build_project
+
+    main = Pou(
+        name="Main",
+        kind="program",
+        language="st",
+        declarations="VAR count : INT; got : INT; END_VAR",
+        body="Add(2);\nTHIS^.Add(n := 3);\nHalf := 1;\ngot := Half;",
+        methods=[
+            Method(name="Add", access="PRIVATE", declarations="VAR_INPUT n : INT; END_VAR", body="count := count + n;")
+        ],
+        properties=[
+            Property(
+                name="Half",
+                type="INT",
+                get=Accessor(body="Half := count / 2;"),
+                set=Accessor(body="count := Half * 2;"),
+            )
+        ],
+    )
+    project = Project(name="p", pous=[main])
+    ws.create(project)
+    assert sorted(p.name for p in (ws.folder("p") / "pous").iterdir()) == ["Main.st.json"]
+    loaded = ws.load("p").project
+    assert loaded == project
+    sim = build_project(loaded).simulation()
+    for _ in range(2):
+        sim.cycle(1)
+        assert (sim.read("Main.count"), sim.read("Main.got")) == (2, 1)
+
+
 def test_cfc_chart_is_stored_as_cfc_json_and_comes_back_a_chart(ws: Workspace) -> None:
     """Issue 26: a CFC POU is pous/<name>.cfc.json, its one chart with its execution order (CFC-01, CFC-02)."""
     from ladderlab.model.cfc import CfcBody

@@ -589,3 +589,85 @@ def test_a_member_path_is_renamed_exactly_when_its_declared_type_shares_the_memb
     renamed, _ = rename_member(project, "Counter", "Bump", "Add")
     expected = [call(k, leaf, dot, "Add" if leaf == "inner" else "Bump") for k, leaf, dot in calls]
     assert renamed.pou("Main").body.strip() == "\n".join(expected)
+
+
+PROGRAM_METHOD = """
+PROGRAM Store
+VAR total : INT; END_VAR
+METHOD Put : INT
+VAR_INPUT n : INT; END_VAR
+total := total + n;
+Put := total;
+END_METHOD
+METHOD Twice : INT
+Twice := THIS^.Put(1) + Put(1);
+END_METHOD
+Put(n := 1);
+END_PROGRAM
+FUNCTION_BLOCK Other
+VAR_OUTPUT q : INT; END_VAR
+METHOD Put : INT
+Put := 100;
+END_METHOD
+q := Put() + Store.Put(2);
+END_FUNCTION_BLOCK
+PROGRAM Main
+VAR o : Other; r : INT; t : INT; END_VAR
+o();
+r := Store.Put(n := 3) + o.q; (* Store.Put in a comment *)
+t := Store.Twice();
+END_PROGRAM
+PROGRAM Hiding
+VAR Store : Other; x : INT; END_VAR
+Store();
+x := Store.Put();
+END_PROGRAM
+"""
+
+
+def test_renaming_a_program_method_renames_its_calls_inside_and_through_the_programs_name() -> None:
+    """Issue 25 item 5 (CODESYS: methods of PROGRAMs): ``Put(...)``, ``THIS^.Put`` and the method's result variable
+    in the program, ``Store.Put(...)`` in other POUs and an LD box ``Store.Put``; an FB's own method of that name, a
+    variable that hides the program's name and a comment keep their text. The renamed project computes what the
+    original computed (one scan, by hand: Store +1 -> 1; Main: o: 100 + (1 + 2 = 3) -> q 103, Store.Put(3) -> 6,
+    r = 6 + 103 = 109; Twice: 7 + 8 = 15; Hiding: its own Other instance, Put() = 100, whose body's Store.Put(2) is
+    the program's -> 10; the LD box: Put(5) -> 15)."""
+    from ladderlab.model.project import Pou
+    from ladderlab.simulation.build import build_project
+    from ladderlab.st.project_text import source_to_project
+    from ladderlab.st.refactor import member_name_problem, rename_member
+    from tests.ir.diagram_support import box, contact, ld_pou, rung
+
+    project, diagnostics = source_to_project(PROGRAM_METHOD, "store")
+    assert diagnostics == [] and project is not None
+    put = box("b1", "Store.Put", en=True, n="5", outputs={"OUT": "got"})
+    project.pous.append(ld_pou("Lad", "VAR got : INT; END_VAR", rung("n1", contact("c1", "TRUE"), put)))
+    renamed, changes = rename_member(project, "Store", "put", "Add")
+    store, other, main, hiding, lad = (renamed.pou(n) for n in ("Store", "Other", "Main", "Hiding", "Lad"))
+    assert [m.name for m in store.methods] == ["Add", "Twice"] and [m.name for m in other.methods] == ["Put"]
+    assert store.methods[0].body.strip() == "total := total + n;\nAdd := total;"
+    assert store.methods[1].body.strip() == "Twice := THIS^.Add(1) + Add(1);"
+    assert store.body.strip() == "Add(n := 1);"
+    assert other.body.strip() == "q := Put() + Store.Add(2);"
+    assert main.body.strip().splitlines() == [
+        "o();",
+        "r := Store.Add(n := 3) + o.q; (* Store.Put in a comment *)",
+        "t := Store.Twice();",
+    ]
+    assert hiding.body.strip() == "Store();\nx := Store.Put();"
+    assert Pou.model_validate(lad).body.networks[0].elements[1].call == "Store.Add"
+    assert [(c.part, c.pou, c.member) for c in changes] == [
+        ("body", "Store", None),
+        ("method", "Store", "Put"),
+        ("body", "Store", "Put"),
+        ("body", "Store", "Twice"),
+        ("body", "Other", None),
+        ("body", "Main", None),
+        ("network", "Lad", None),
+    ]
+    for before_after in (project, renamed):
+        sim = build_project(before_after).simulation()
+        sim.cycle(1)
+        got = (sim.read("Main.r"), sim.read("Main.t"), sim.read("Hiding.x"), sim.read("Lad.got"))
+        assert got == (109, 15, 100, 15)
+    assert member_name_problem(project, "Store", "Put", "twice") == "Store already has a member called Twice"

@@ -777,7 +777,10 @@ def user_call(node: ast.Call, ctx: PouContext, after: list[Stmt] | None = None) 
     in_outs: list[Var] = []
     if pou.method is not None:  # the instance it is called on; a bare ``M()``: the caller's own
         instance = node.callee.base if isinstance(node.callee, ast.Member) else None
-        this = lower_access(instance, ctx) if instance is not None else ctx.this_var()
+        if isinstance(instance, ast.Name) and isinstance(instance.ref, PouInfo):  # ``Prog.M()``: its one instance
+            this = program_instance(instance, instance.ref, ctx, "call")
+        else:
+            this = lower_access(instance, ctx) if instance is not None else ctx.this_var()
         if isinstance(this.type, Reference):  # an interface variable: the instance it refers to
             this = Var(this.scope, this.name, this.type.target, (*this.path, Deref()))
         in_outs.append(this)

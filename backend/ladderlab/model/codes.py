@@ -93,7 +93,12 @@ _TABLE: list[tuple[str, str, Severity, str]] = [
     ("st", "ST-UNKNOWN-MEMBER", "error", "A structure, function block or value has no member of that name."),
     ("st", "ST-NOT-ACCESSIBLE", "error", "A function block's internal variable is used from outside it."),
     ("st", "ST-NOT-CALLABLE", "error", "Something that cannot be called is called."),
-    ("st", "ST-PLANT", "error", "Control code calls a plant (plants run in the plant task, never called)."),
+    (
+        "st",
+        "ST-PLANT",
+        "error",
+        "Control code calls a plant or its method or property (plants run in the plant task, never called).",
+    ),
     ("st", "ST-CALL-ARGS", "error", "The arguments of a call do not match its parameters."),
     ("st", "ST-AMBIGUOUS", "error", "An enumeration value belongs to several enumerations."),
     ("st", "ST-TYPE-MISMATCH", "error", "A value of one type is used where another type is needed."),

@@ -49,8 +49,8 @@ MethodAccess = Literal["PUBLIC", "PRIVATE", "PROTECTED", "INTERNAL"]
 
 
 class Method(Model):
-    """A METHOD of a FUNCTION_BLOCK (IEC 61131-3 ed. 3, CODESYS): its own variables and ST body; it works on the
-    variables of the instance it is called on (docs/st.md, object orientation)."""
+    """A METHOD of a FUNCTION_BLOCK or a PROGRAM (IEC 61131-3 ed. 3, CODESYS): its own variables and ST body; it
+    works on the variables of the instance it is called on (docs/st.md, object orientation)."""
 
     model_config = ConfigDict(extra="forbid")
 
@@ -114,8 +114,10 @@ class Pou(Model):
     return_type: str | None = Field(default=None, description="Functions only: the result type.")
     declarations: str = Field(default="", description="ST text of the VAR...END_VAR blocks, as typed.")
     body: str | LdBody | CfcBody | FbdBody | SfcBody = ""
-    methods: list[Method] = Field(default_factory=list, description="Function blocks only: their METHODs.")
-    properties: list[Property] = Field(default_factory=list, description="Function blocks only: their PROPERTYs.")
+    methods: list[Method] = Field(default_factory=list, description="Function blocks and programs only: their METHODs.")
+    properties: list[Property] = Field(
+        default_factory=list, description="Function blocks and programs only: their PROPERTYs."
+    )
     actions: list[PouAction] = Field(
         default_factory=list, description="Function blocks only: their ACTIONs outside SFC (CODESYS), ST bodies."
     )

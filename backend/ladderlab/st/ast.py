@@ -588,8 +588,8 @@ class Pou:
     body: list[Stmt]
     span: Span = _span()
     sfc: Sfc | None = None  # a body written in textual SFC (``body`` is then empty)
-    methods: list[MethodDecl] = field(default_factory=list)  # a function block's METHODs
-    properties: list[PropertyDecl] = field(default_factory=list)  # a function block's PROPERTYs
+    methods: list[MethodDecl] = field(default_factory=list)  # a function block's or a program's METHODs
+    properties: list[PropertyDecl] = field(default_factory=list)  # a function block's or a program's PROPERTYs
     actions: list[ActionDecl] = field(default_factory=list)  # a function block's ACTIONs (outside SFC)
     modifier: str | None = None  # a function block's FINAL or ABSTRACT
     extends: str | None = None  # the function block it EXTENDS

@@ -151,11 +151,8 @@ def _pou_call(checker: Any, node: ast.Call, pou: PouInfo, statement: bool) -> Ty
         return ERROR
     if pou.kind == "PROGRAM":
         if checker.pou is not None and checker.pou.kind != "PROGRAM":
-            checker.report(
-                "ST-NOT-CALLABLE",
-                f"a {checker.pou.kind.lower().replace('_', ' ')} cannot call the program {pou.name}",
-                node.callee,
-            )
+            caller = "method" if checker.pou.method is not None else checker.pou.kind.lower().replace("_", " ")
+            checker.report("ST-NOT-CALLABLE", f"a {caller} cannot call the program {pou.name}", node.callee)
         if not statement:
             checker.report("ST-NOT-CALLABLE", f"the program {pou.name} has no value: call it as a statement", node)
     inputs = [Param(s.name, s.type, s.var_class == "VAR_IN_OUT") for s in pou.parameters("VAR_INPUT", "VAR_IN_OUT")]

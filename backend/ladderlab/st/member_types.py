@@ -32,9 +32,9 @@ def _type_name(spec: ast.TypeSpec) -> str | None:
 
 @dataclass
 class ProjectTypes:
-    """The function blocks, structures and INTERFACEs of a dumped project, by upper-case name."""
+    """The function blocks, programs, structures and INTERFACEs of a dumped project, by upper-case name."""
 
-    fields: dict[str, dict[str, str]] = field(default_factory=dict)  # FB (with inherited) or STRUCT: member -> type
+    fields: dict[str, dict[str, str]] = field(default_factory=dict)  # FB (inherited too), PROGRAM, STRUCT: var -> type
     bases: dict[str, str] = field(default_factory=dict)  # FB -> the FB it EXTENDS
     implements: dict[str, list[str]] = field(default_factory=dict)  # FB -> its INTERFACEs
     interface_bases: dict[str, list[str]] = field(default_factory=dict)  # INTERFACE -> those it EXTENDS
@@ -61,7 +61,7 @@ class ProjectTypes:
                         }
         own: dict[str, dict[str, str]] = {}
         for pou in data["pous"]:
-            if pou["kind"] != "function_block":
+            if pou["kind"] not in ("function_block", "program"):  # (a PROGRAM's methods, CODESYS: ``Prog.M()``)
                 continue
             name = pou["name"].upper()
             own[name] = declared_types(pou["declarations"])

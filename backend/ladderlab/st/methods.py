@@ -5,6 +5,11 @@ first in-out ``THIS`` is the instance it is called on: the method's own variable
 every call), and a name it does not declare is a variable of ``F`` reached through ``THIS`` (ir/context.py).
 A call ``inst.M(a := 1)`` passes ``inst`` as ``THIS``; ``THIS^`` inside a method is that instance, in the FB's own
 body the instance running it (the engine's ``self``, ir/context.py ``this_var``).
+
+A PROGRAM has methods and properties too (CODESYS): its instance is ``THIS``, so ``M()`` and ``THIS^.M()`` in the
+program run on the instance running it, and ``Prog.M()`` elsewhere on the instance named like the program (the one
+``Prog.x`` reads, ir/lower_expr.py ``program_instance``). Nothing extends a program: its methods are neither
+ABSTRACT nor FINAL, and PROTECTED is PRIVATE.
 """
 
 from __future__ import annotations
@@ -63,11 +68,15 @@ def declare_methods(
     for method, name, label in members:
         report = checker._reporter(method_file(fb.name, label, "declarations"), f"{fb.name}.{label}")
         key = label.upper()
-        if fb.kind != "FUNCTION_BLOCK":
-            what = "actions" if any(method is a for a in as_actions) else "methods"
-            report("ST-DECL", f"only a function block has {what}, not a {fb.kind.lower().replace('_', ' ')}", None)
+        action = any(method is a for a in as_actions)
+        if fb.kind not in ("FUNCTION_BLOCK", "PROGRAM") or (action and fb.kind != "FUNCTION_BLOCK"):
+            owners = "a function block has actions" if action else "a function block or a program has methods"
+            report("ST-DECL", f"only {owners}, not a {fb.kind.lower().replace('_', ' ')}", None)
             continue
         check_identifier(name, None, report)
+        if fb.kind == "PROGRAM" and (method.abstract or method.final):  # (CODESYS: a program is no class to extend)
+            word = "ABSTRACT" if method.abstract else "FINAL"
+            report("ST-DECL", f"a program's method cannot be {word}: nothing extends a program", None)
         upper = name.upper()
         if key in fb.methods or (key != upper and upper in fb.methods):  # (methods are declared first)
             report("ST-DUPLICATE", f"{fb.name} has two {members_word} called '{name}'", None)
@@ -76,7 +85,6 @@ def declare_methods(
             report("ST-DUPLICATE", f"'{name}' is both a variable and a {member_word} of {fb.name}", None)
             continue
         info = PouInfo(f"{fb.name}.{label}", "FUNCTION", "st", None)
-        action = any(method is a for a in as_actions)
         info.method = MethodInfo(fb, name, method.access, method.final, method.abstract, key, action)
         info.symbols[THIS] = Symbol(
             THIS, "VAR_IN_OUT", t.FbType(fb.name, pou=fb), ast.NamedType(fb.name), pou=info.name
@@ -204,8 +212,8 @@ def is_super(node: ast.Expr) -> bool:
 
 
 def this_type(checker: Any, node: ast.Deref) -> Type | None:
-    """``THIS^`` in a function block or its method: the instance the code runs on; ``SUPER^``: the same seen as
-    the FB's base. None: neither (or a variable declared with that name)."""
+    """``THIS^`` in a function block, a program or their methods: the instance the code runs on; ``SUPER^``: the
+    same seen as the FB's base. None: neither (or a variable declared with that name)."""
     caller, base = checker.pou, node.base
     if not isinstance(base, ast.Name) or base.name.upper() not in (THIS, SUPER):
         return None
@@ -215,7 +223,9 @@ def this_type(checker: Any, node: ast.Deref) -> Type | None:
     owner = _own_fb(caller)
     if owner is None:
         checker.report(
-            "ST-UNKNOWN-VAR", f"{base.name.upper()}^ is only known in a function block and its methods", node
+            "ST-UNKNOWN-VAR",
+            f"{base.name.upper()}^ is only known in a function block, a program and their methods",
+            node,
         )
         return ERROR
     if base.name.upper() == THIS:
@@ -229,12 +239,26 @@ def this_type(checker: Any, node: ast.Deref) -> Type | None:
 
 
 def check_access(checker: Any, info: MethodInfo, node: ast.Expr, what: str, verb: str) -> None:
-    """PRIVATE: only the FB's own code may use it; PROTECTED: also the FBs derived from it (located error)."""
+    """PRIVATE: only the FB's own code may use it; PROTECTED: also the FBs derived from it; a plant's (a PROGRAM
+    modelling the process, issue 21): only the plant itself (located errors)."""
     caller_fb = _own_fb(checker.pou)
+    if info.owner.plant and caller_fb is not info.owner:
+        checker.report(
+            "ST-PLANT",
+            f"{what} {info.owner.name}.{info.name} belongs to the plant {info.owner.name}, which models the process: "
+            f"control code cannot {verb} it (read and write the signals it shares instead)",
+            node,
+        )
+        return
     if (info.access == "PRIVATE" and caller_fb is not info.owner) or (
         info.access == "PROTECTED" and (caller_fb is None or not caller_fb.derives_from(info.owner))
     ):
-        who = "its own function block" if info.access == "PRIVATE" else "its function block and those derived from it"
+        if info.owner.kind == "PROGRAM":  # (nothing derives from a program: PROTECTED is PRIVATE)
+            who = "its own program"
+        elif info.access == "PRIVATE":
+            who = "its own function block"
+        else:
+            who = "its function block and those derived from it"
         checker.report(
             "ST-NOT-ACCESSIBLE",
             f"{what} {info.owner.name}.{info.name} is {info.access}: only {who} may {verb} it",
@@ -271,10 +295,11 @@ def own_property(checker: Any, node: ast.Name) -> Type | None:
 
 
 def _own_fb(caller: PouInfo | None) -> PouInfo | None:
-    """The function block whose instance ``THIS^`` is in ``caller``'s code: its own, or a method's FB."""
+    """The function block (or PROGRAM, CODESYS) whose instance ``THIS^`` is in ``caller``'s code: its own, or a
+    method's owner."""
     if caller is not None and caller.method is not None:
         return caller.method.owner
-    return caller if caller is not None and caller.kind == "FUNCTION_BLOCK" else None
+    return caller if caller is not None and caller.kind in ("FUNCTION_BLOCK", "PROGRAM") else None
 
 
 def is_self(node: ast.Expr) -> bool:

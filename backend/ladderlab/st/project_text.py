@@ -8,6 +8,7 @@ examples can go through ``check_project`` exactly like edited projects.
 from __future__ import annotations
 
 import bisect
+from typing import Any
 
 from ..model.diagnostics import Diagnostic
 from ..model.project import (
@@ -107,14 +108,22 @@ def _pou(pou: ast.Pou, source: _Text, language: str) -> Pou:
         return_type=_type_text(pou.return_type, source),
         declarations=_keep_lines(*declarations) if declarations[0] else "",
         body=_keep_lines(*body),
-        methods=[_method(method, source) for method in pou.methods],
-        properties=[_property(prop, source) for prop in pou.properties],
-        actions=[_action(action, source) for action in pou.actions],
-        extends=pou.extends,
-        implements=pou.implements,
-        abstract=pou.modifier == "ABSTRACT",
-        final=pou.modifier == "FINAL",
+        **_object_parts(pou, source),
     )
+
+
+def _object_parts(pou: ast.Pou, source: _Text) -> dict[str, Any]:
+    """The model fields of a POU's object orientation (methods, properties, actions, EXTENDS, ...), for an ST or IL
+    POU and an SFC one alike."""
+    return {
+        "methods": [_method(method, source) for method in pou.methods],
+        "properties": [_property(prop, source) for prop in pou.properties],
+        "actions": [_action(action, source) for action in pou.actions],
+        "extends": pou.extends,
+        "implements": pou.implements,
+        "abstract": pou.modifier == "ABSTRACT",
+        "final": pou.modifier == "FINAL",
+    }
 
 
 def _parts(pou, leading: list, end: tuple[int, int], source: _Text, language: str = "st"):
@@ -186,7 +195,10 @@ def _sfc_pou(pou: ast.Pou, source: _Text) -> tuple[Pou, list[Diagnostic]]:
         declarations = source.between((first.line, first.column), (last.end_line, last.end_column))
     body, problems = sfc_from_text(pou, source.between)
     kind = _KIND[pou.kind]
-    return Pou(name=pou.name, kind=kind, language="sfc", declarations=declarations, body=body), problems
+    made = Pou(
+        name=pou.name, kind=kind, language="sfc", declarations=declarations, body=body, **_object_parts(pou, source)
+    )
+    return made, problems
 
 
 def _keep_lines(body: str, start: tuple[int, int]) -> str:

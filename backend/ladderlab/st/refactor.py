@@ -121,17 +121,19 @@ class MemberUses:
 
 
 def rename_member(project: Project, fb: str, old: str, new: str) -> tuple[Project, list[Reference]]:
-    """``project`` with method or property ``old`` of function block (or INTERFACE) ``fb`` called ``new``: its
+    """``project`` with method or property ``old`` of function block (program, INTERFACE) ``fb`` called ``new``: its
     declaration and that of every FB and INTERFACE sharing it (``ProjectTypes.group``: overrides, the base it
     overrides, interface methods and their implementations), and every use through a variable typed as one of them
-    (``inst.Old(...)``, ``a.b.Old``, ``arr[i].Old``, ``r^.Old``, ``itf.Old()``, LD/FBD boxes ``inst.Old``) or inside
-    one of those FBs (``THIS^.Old``, ``SUPER^.Old``, ``Old(...)``, a property's bare ``Old``: the value its GET
-    assigns and its SET reads, or a use in the FB's code); and what changed. A path through a property or a
-    function's result is not followed: the check then reports the call it no longer finds."""
+    (``inst.Old(...)``, ``a.b.Old``, ``arr[i].Old``, ``r^.Old``, ``itf.Old()``, ``Prog.Old()``, LD/FBD boxes
+    ``inst.Old``) or inside one of those FBs or programs (``THIS^.Old``, ``SUPER^.Old``, ``Old(...)``, a property's
+    bare ``Old``: the value its GET assigns and its SET reads, or a use in their code); and what changed. A path
+    through a property or a function's result is not followed: the check then reports the call it no longer finds."""
     data = project.model_dump(by_alias=True)
     types = ProjectTypes.of(data)
     group = types.group(fb, old)
-    globals_ = declared_types(data["globals"])
+    # a PROGRAM's name is its one instance in every POU's code (``Prog.Old()``, CODESYS), unless a variable hides it
+    globals_ = {p["name"].upper(): p["name"].upper() for p in data["pous"] if p["kind"] == "program"}
+    globals_ |= declared_types(data["globals"])
     changes: list[Reference] = []
     data["types"] = _interface_methods(data["types"], group, old, new, changes)
     for pou in data["pous"]:

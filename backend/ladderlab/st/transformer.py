@@ -167,8 +167,13 @@ class AstBuilder(Transformer):
         rest = c[3:-1] if kind == "FUNCTION" else c[2:-1]
         blocks = [x for x in rest if isinstance(x, ast.VarBlock)]
         sfc = next((x for x in rest if isinstance(x, ast.Sfc)), None)
-        body = [x for x in rest if not isinstance(x, (ast.VarBlock, ast.Sfc))]
-        return ast.Pou(kind, str(c[1]), return_type, blocks, body, span_of(c), sfc)
+        methods = [x for x in rest if isinstance(x, ast.MethodDecl)]  # a PROGRAM's (CODESYS)
+        properties = [x for x in rest if isinstance(x, ast.PropertyDecl)]
+        members = (ast.VarBlock, ast.Sfc, ast.MethodDecl, ast.PropertyDecl)
+        body = [x for x in rest if not isinstance(x, members)]
+        return ast.Pou(
+            kind, str(c[1]), return_type, blocks, body, span_of(c), sfc, methods=methods, properties=properties
+        )
 
     def _function_block(self, c):
         """``FUNCTION_BLOCK [FINAL|ABSTRACT] name [EXTENDS base] [IMPLEMENTS i, ...] VARs METHODs body``."""

@@ -174,7 +174,8 @@ def _split_pou(text: str, words: list[Word]) -> Pou:
 
 def compose_pou_text(pou: Pou) -> str:
     """The complete IEC text of an ST or IL POU, as stored in ``pous/<name>.st`` / ``.il``; a function block's
-    ABSTRACT / FINAL, EXTENDS, IMPLEMENTS and METHODs (after its VAR blocks, IEC 61131-3 ed. 3) included."""
+    ABSTRACT / FINAL, EXTENDS, IMPLEMENTS and METHODs (after its VAR blocks, IEC 61131-3 ed. 3), and a program's
+    METHODs and PROPERTYs (CODESYS), included."""
     modifier = "ABSTRACT " if pou.abstract else "FINAL " if pou.final else ""
     header = f"{POU_HEADER[pou.kind]} {modifier}{pou.name}"
     if pou.kind == "function":

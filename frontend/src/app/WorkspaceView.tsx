@@ -515,7 +515,7 @@ function PouView({ name }: { name: string }) {
     },
     { id: "declarations", label: "Declarations" },
     { id: "variables", label: "Variables" },
-    ...(pou.kind === "function_block" ? [{ id: "methods" as const, label: "Methods" }] : []),
+    ...(pou.kind === "function_block" || pou.kind === "program" ? [{ id: "methods" as const, label: "Methods" }] : []),
     ...(pou.language !== "st" ? [{ id: "st" as const, label: "View as ST" }] : []),
     ...(pou.kind === "function_block"
       ? [{ id: "actions" as const, label: `Actions (${pou.actions?.length ?? 0})` }]

@@ -2029,8 +2029,8 @@ export interface components {
     };
     /**
      * Method
-     * @description A METHOD of a FUNCTION_BLOCK (IEC 61131-3 ed. 3, CODESYS): its own variables and ST body; it works on the
-     *     variables of the instance it is called on (docs/st.md, object orientation).
+     * @description A METHOD of a FUNCTION_BLOCK or a PROGRAM (IEC 61131-3 ed. 3, CODESYS): its own variables and ST body; it
+     *     works on the variables of the instance it is called on (docs/st.md, object orientation).
      */
     Method: {
       /**
@@ -2508,14 +2508,14 @@ export interface components {
       language: "st" | "ld" | "fbd" | "cfc" | "il" | "sfc";
       /**
        * Methods
-       * @description Function blocks only: their METHODs.
+       * @description Function blocks and programs only: their METHODs.
        */
       methods?: components["schemas"]["Method"][];
       /** Name */
       name: string;
       /**
        * Properties
-       * @description Function blocks only: their PROPERTYs.
+       * @description Function blocks and programs only: their PROPERTYs.
        */
       properties?: components["schemas"]["Property"][];
       /**

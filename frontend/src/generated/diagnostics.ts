@@ -1420,12 +1420,14 @@ export const DIAGNOSTICS = {
     "ST-PLANT": {
       anchor: "st-plant",
       area: "st",
-      example: "Tank();",
+      example: "Tank();\nx := Tank.Fill();",
       example_language: "st",
-      example_note: "with `Tank` a plant (`pous/Tank.plant.st`)",
-      fix: "a plant runs in the plant task before every scan; control code reads and writes the signals it shares with the plant instead of calling it.",
+      example_note:
+        "with `Tank` a plant (`pous/Tank.plant.st`) and `Fill` its method (or property)",
+      fix: "a plant runs in the plant task before every scan; control code reads and writes the signals it shares with the plant instead of calling it or its methods and properties.",
       severity: "error",
-      summary: "Control code calls a plant (plants run in the plant task, never called).",
+      summary:
+        "Control code calls a plant or its method or property (plants run in the plant task, never called).",
     },
     "ST-RANGE": {
       anchor: "st-range",

@@ -1,5 +1,6 @@
-// The Methods tab of a function block (issue 25, CODESYS's objects under an FB): its methods and properties listed, their
-// access (PUBLIC/PRIVATE/PROTECTED/INTERNAL), FINAL and ABSTRACT set,
+// The Methods tab of a function block or a program (issue 25, CODESYS's objects under an FB or a PROGRAM): its methods
+// and properties listed, their access (PUBLIC/PRIVATE/PROTECTED/INTERNAL), FINAL and ABSTRACT set (an FB's only:
+// nothing extends a program),
 // added, renamed (with every call, previewed: the tree's rename dialog) and deleted; a method's result type, declarations and body, and a property's type and GET / SET
 // texts, edited in the ST editor with the live check's diagnostics; breakpoints in a method's body, and its own
 // variables' values inline while the scan is halted in a call of it.
@@ -56,6 +57,8 @@ export function MethodsView({ pou, focus }: { pou: Pou; focus: Focus | null }) {
   const [renaming, setRenaming] = useState<string | null>(null);
   const online = useOnline((s) => s.phase !== "offline");
   const found = selected ? memberOf(pou, selected) : null;
+  /** A function block may be extended: it and its methods may be ABSTRACT or FINAL (a program's may not). */
+  const extendable = pou.kind === "function_block";
   /** An edit of the FB as one undoable step (add, rename, delete); a refusal is shown instead. */
   const operate = (label: string, edited: Edited, select: string | null) => {
     if (!edited.ok) return setError(edited.error);
@@ -75,7 +78,7 @@ export function MethodsView({ pou, focus }: { pou: Pou; focus: Focus | null }) {
     <div className="methods-view" style={{ display: "flex", gap: "0.75rem", height: "100%", minHeight: 0 }}>
       <div style={{ flex: "0 0 14rem", display: "flex", flexDirection: "column", gap: "0.5rem" }}>
         <div className="methods-fb" style={{ display: "flex", gap: "0.5rem" }}>
-          {(["abstract", "final"] as const).map((which) => (
+          {(extendable ? (["abstract", "final"] as const) : []).map((which) => (
             <label key={which} title={FB_MODIFIER_MEANING[which]}>
               <input
                 type="checkbox"
@@ -266,7 +269,7 @@ function MemberEditor({
             ))}
           </select>
         </label>
-        {kind === "method"
+        {kind === "method" && pou.kind === "function_block"
           ? (["final", "abstract"] as const).map((which) => (
               <label key={which} title={MODIFIER_MEANING[which]}>
                 <input

@@ -49,10 +49,16 @@ describe("methods and properties of a function block", () => {
       ok: false,
       error: expect.stringMatching(/^2x is not an IEC/),
     });
-    expect(addMember({ ...fb, kind: "program" }, "method", "M")).toEqual({
+    expect(addMember({ ...fb, kind: "function", return_type: "INT" }, "method", "M")).toEqual({
       ok: false,
-      error: "Only a function block has methods and properties.",
+      error: "Only a function block or a program has methods and properties.",
     });
+    // a PROGRAM has them too (CODESYS): Main.M, called M() in it and Main.M() elsewhere
+    const program = ok(addMember({ ...fb, name: "Main", kind: "program", methods: [], properties: [] }, "method", "M"));
+    expect([program.kind, program.methods!.map((m) => [m.name, m.access, m.final, m.abstract])]).toEqual([
+      "program",
+      [["M", "PUBLIC", false, false]],
+    ]);
   });
 
   it("renames (also in another case), changes and deletes one member", () => {

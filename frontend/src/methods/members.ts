@@ -10,8 +10,8 @@ export type MemberKind = "method" | "property";
  * choices. A Record, so a specifier added to the model (backend model/project.py MethodAccess) fails to compile here. */
 export const ACCESS_MEANING: Record<Access, string> = {
   PUBLIC: "any code may use it",
-  PRIVATE: "only its own function block",
-  PROTECTED: "its function block and those derived from it",
+  PRIVATE: "only its own function block or program",
+  PROTECTED: "its function block and those derived from it (a program: only itself)",
   INTERNAL: "code of this project (its namespace)",
 };
 
@@ -54,7 +54,9 @@ function refused(pou: Pou, name: string, except?: string): string | null {
 export function addMember(pou: Pou, kind: MemberKind, text: string): Edited {
   const name = text.trim();
   const error =
-    pou.kind !== "function_block" ? "Only a function block has methods and properties." : refused(pou, name);
+    pou.kind !== "function_block" && pou.kind !== "program"
+      ? "Only a function block or a program has methods and properties."
+      : refused(pou, name);
   if (error) return { ok: false, error };
   if (kind === "method") {
     const method: Method = {

@@ -13,8 +13,9 @@ function memberLabel(
 }
 
 /**
- * A function block's methods, properties and actions under it in the project tree (docs/st.md, object orientation),
- * with the FB it extends; choosing a method or property opens it in the FB's Methods tab, an action the FB.
+ * A function block's (or program's) methods, properties and actions under it in the project tree (docs/st.md, object
+ * orientation), with the FB it extends; choosing a method or property opens it in the POU's Methods tab, an action
+ * the FB.
  */
 export function PouMembers({ pou, open }: { pou: Pou; open(member: string | null): void }) {
   const methods = pou.methods ?? [];

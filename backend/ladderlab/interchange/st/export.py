@@ -24,6 +24,7 @@ from ...st.checker import check_project
 from ...st.columns import align_declarations
 from ...st.sfc_text import sfc_to_text
 from ...st.symbols import CheckResult
+from ...storage.project_folder import OO_KEYS
 from ...storage.st_text import compose_pou_text
 from .body import Network, body_lines, comment, network_title
 from .elements import PouScope
@@ -78,8 +79,20 @@ class ExportedPou:
     diagnostics: list[Diagnostic]
 
 
+#: A POU's object orientation, ST text already: an exported POU keeps it as it is.
+_OBJECT_FIELDS = (*OO_KEYS, "extends")
+
+
 def st_pou(project: Project, pou: Pou, checked: CheckResult) -> ExportedPou:
-    """The ST version of the diagram or IL POU ``pou``, or diagnostics saying why it cannot be exported."""
+    """The ST version of the diagram or IL POU ``pou`` with its METHODs, PROPERTYs, ACTIONs and EXTENDS / IMPLEMENTS
+    / ABSTRACT / FINAL (ST already: an FB's or a program's), or diagnostics saying why it cannot be exported."""
+    exported = _st_body(project, pou, checked)
+    if exported.pou is not None:
+        exported.pou = exported.pou.model_copy(update={key: getattr(pou, key) for key in _OBJECT_FIELDS})
+    return exported
+
+
+def _st_body(project: Project, pou: Pou, checked: CheckResult) -> ExportedPou:
     info = checked.pou(pou.name)
     diagnostics: list[Diagnostic] = [
         d for d in checked.diagnostics if d.pou is None or d.pou.upper() == pou.name.upper()
@@ -125,7 +138,6 @@ def st_pou(project: Project, pou: Pou, checked: CheckResult) -> ExportedPou:
             return_type=pou.return_type,
             declarations=_declarations(pou.declarations, declarations),
             body=body,
-            actions=pou.actions,  # ST already (an FB's actions outside SFC)
         ),
         source_map,
         [d for d in diagnostics if d.severity != "error"],

@@ -87,7 +87,6 @@ def il_to_st(pou: Pou, checked: CheckResult) -> tuple[Pou | None, list[Diagnosti
         return_type=pou.return_type,
         declarations=declarations,
         body=text,
-        actions=pou.actions,
     )
     return exported, []
 
