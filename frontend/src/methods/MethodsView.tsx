@@ -4,7 +4,7 @@
 // texts, edited in the ST editor with the live check's diagnostics; breakpoints in a method's body; online, the
 // FB instance's variables a body names inline, live (writable as in the FB body), and a method's own variables'
 // values while the scan is halted in a call of it (read only).
-import { useState, type FormEvent } from "react";
+import { useState, type FormEvent, type ReactNode } from "react";
 import type { Accessor, Method, Pou, Property } from "../generated/api";
 import { useTextDebug } from "../breakpointPlaces/useTextDebug";
 import { useOnline } from "../online/store";
@@ -43,7 +43,16 @@ const MODIFIER_MEANING = {
   abstract: "ABSTRACT: no body here; the function block is ABSTRACT and a derived one implements it",
 };
 
-export function MethodsView({ pou, focus }: { pou: Pou; focus: Focus | null }) {
+/** `instancePicker`: the shell's choice of the FB instance the bodies show online (the FB body's too). */
+export function MethodsView({
+  pou,
+  focus,
+  instancePicker,
+}: {
+  pou: Pou;
+  focus: Focus | null;
+  instancePicker?: ReactNode;
+}) {
   const [selected, setSelected] = useState<string | null>(
     focus?.member ?? pou.methods?.[0]?.name ?? pou.properties?.[0]?.name ?? null,
   );
@@ -130,6 +139,7 @@ export function MethodsView({ pou, focus }: { pou: Pou; focus: Focus | null }) {
             kind={found.kind}
             member={found.member}
             readOnly={online ? "Online: go offline to edit." : null}
+            instancePicker={instancePicker}
             onRename={(text) => {
               // refused here at once (a taken name); else the preview of every call it changes
               const edited = renameMember(pou, found.member.name, text);
@@ -192,8 +202,10 @@ function MemberEditor({
   onRename,
   onDelete,
   focus,
+  instancePicker,
 }: {
   focus: Focus | null;
+  instancePicker?: ReactNode;
   pou: Pou;
   kind: MemberKind;
   member: Method | Property;
@@ -233,6 +245,7 @@ function MemberEditor({
         member={{ ...of, file }}
         editor={editor}
         debug={of.call ? debug : undefined}
+        instancePicker={instancePicker}
         focusLine={focusLine(file)}
       />
     ) : (
@@ -367,6 +380,7 @@ function MemberBody({
   editor,
   debug,
   focusLine,
+  instancePicker,
 }: {
   pou: Pou;
   scope: Scope;
@@ -374,6 +388,7 @@ function MemberBody({
   editor: Omit<Parameters<typeof StEditor>[0], "online" | "debug" | "focusLine">;
   debug: Parameters<typeof StEditor>[0]["debug"];
   focusLine: { line: number; seq: number } | null;
+  instancePicker?: ReactNode;
 }) {
   const online = useStOnline(pou, editor.text, scope, member);
   return (
@@ -386,7 +401,7 @@ function MemberBody({
         borderBottom: "1px solid #ccc",
       }}
     >
-      <StOnlineBar online={online} />
+      <StOnlineBar online={online} instancePicker={instancePicker} />
       <div style={{ flex: "1 1 auto", minHeight: 0, overflow: "hidden" }}>
         <StEditor {...editor} debug={debug} online={online.view} focusLine={focusLine} />
       </div>
