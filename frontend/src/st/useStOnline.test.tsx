@@ -125,7 +125,16 @@ describe("useStOnline (issue 9: ST online values, values of the halt)", () => {
     expect(result.current.view?.describe(inc!)).toBe("Inc : INT = 2 (this call's input)");
     act(() => result.current.view?.onMenu(inc!, 10, 10));
     expect(result.current.overlay).toBeTruthy();
-    render(<>{result.current.overlay}</>);
+    const { rerender, unmount } = render(<>{result.current.overlay}</>);
     expect(screen.queryByRole("menuitem")).toBeNull(); // the call's own variable has no path: no write or force
+    // the instance's Count is written from the method body as from the FB body: the halted call's instance's
+    act(() => result.current.view!.onMenu(result.current.view!.occurrences[0]!, 10, 10));
+    rerender(<>{result.current.overlay}</>);
+    fireEvent.click(screen.getByRole("menuitem", { name: "Write value of Count…" }));
+    rerender(<>{result.current.overlay}</>);
+    fireEvent.change(screen.getByLabelText("Value"), { target: { value: "42" } });
+    fireEvent.click(screen.getByRole("button", { name: "OK" }));
+    expect(write).toHaveBeenCalledWith("MAIN.C2.COUNT", 42);
+    unmount();
   });
 });
