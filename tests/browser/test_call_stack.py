@@ -56,18 +56,19 @@ def inline_values(page, label: str):
     return page.get_by_role("textbox", name=label).locator(".cm-st-value")
 
 
-def halted_in_clamp_then_open_the_method(page, calls, screenshot: str) -> None:
+def halted_in_clamp_then_open_the_method(page, calls, screenshot: str, count: str) -> None:
     """Halted before Clamp's first line in the call from Motor.Start: the call stack, Clamp's own values inline; then
-    the method's call chosen opens it in Motor's Methods tab with its own values."""
+    the method's call chosen opens it in Motor's Methods tab with its own values and its instance's `count`."""
     expect(calls).to_have_text(["MAIN, line 1", "MOTOR.START (MAIN.M), line 2", "CLAMP, line 1"])
     # Clamp(14, 10) halted before its first statement: tmp still has its declared initial 7, the result its 0
     # (tmp v | tmp hi tmp hi | Clamp tmp)
     expect(inline_values(page, "Clamp body")).to_have_text(["7", "14", "7", "10", "7", "10", "0", "7"])
     page.screenshot(path=str(ARTIFACTS / screenshot))
-    # Start's body with its own n = 7, tmp = 14 and result 0 (count is the instance's: not a variable of the call)
+    # Start's body with its own n = 7, tmp = 14 and result 0, and MAIN.M's count (ON-03, ON-09: the instance's, live)
+    # (tmp n | count count tmp | Start count)
     calls.get_by_role("button", name="MOTOR.START (MAIN.M), line 2").click()
     expect(page.get_by_role("tab", name="Methods")).to_have_attribute("aria-selected", "true")
-    expect(inline_values(page, "Motor.Start body")).to_have_text(["14", "7", "14", "0"])
+    expect(inline_values(page, "Motor.Start body")).to_have_text(["14", "7", count, count, "14", "0", count])
 
 
 def test_halted_in_a_function_called_by_a_method_the_call_stack_and_each_calls_own_values(page, server):
@@ -84,14 +85,14 @@ def test_halted_in_a_function_called_by_a_method_the_call_stack_and_each_calls_o
     debug = page.get_by_role("region", name="Debugging")
     debug.get_by_text("Halted at CLAMP, line 1").wait_for()
     calls = debug.get_by_role("navigation", name="Call stack").locator("li")
-    halted_in_clamp_then_open_the_method(page, calls, "call-stack-function.png")
+    halted_in_clamp_then_open_the_method(page, calls, "call-stack-function.png", count="0")  # scan 1: count 0
 
     # Step out of Clamp (it clamps tmp to 10 and returns; count becomes 10): halted at the method's next line, Clamp's
     # call gone from the stack
     debug.get_by_role("button", name="Step out").click()
     debug.get_by_text("Halted at MOTOR.START, line 3").wait_for()
     expect(calls).to_have_text(["MAIN, line 1", "MOTOR.START (MAIN.M), line 3"])
-    expect(inline_values(page, "Motor.Start body")).to_have_text(["14", "7", "14", "0"])
+    expect(inline_values(page, "Motor.Start body")).to_have_text(["14", "7", "10", "10", "14", "0", "10"])
     page.screenshot(path=str(ARTIFACTS / "call-stack-method.png"))
 
 
@@ -119,5 +120,6 @@ def test_a_step_through_a_past_scan_shows_the_call_stack_of_the_point_reached(pa
     for text in ("MOTOR.START, line 1", "MOTOR.START, line 2", "CLAMP, line 1"):
         stepping.get_by_role("button", name="Next step").click()
         point.filter(has_text=f"Scan 2, halted before {text}").wait_for()
-    halted_in_clamp_then_open_the_method(page, calls, "call-stack-history-step.png")
+    # scan 1 left count = 0 + Clamp(14, 10) = 10; scan 2 stands before adding to it
+    halted_in_clamp_then_open_the_method(page, calls, "call-stack-history-step.png", count="10")
     assert scan.inner_text() == "2"  # the scan shown; the live simulation stays at 3

@@ -124,8 +124,9 @@ def test_add_edit_rename_and_delete_methods_then_run_and_halt_in_one(page, serve
     page.keyboard.press("F5")
     debug = page.get_by_role("region", name="Debugging")
     debug.get_by_text("Halted at COUNTER.SCALED, line 1").wait_for()
-    # the method's own variables show inline at the halt (k = 3, its result 0 so far); n is the instance's
-    expect(editor(page, "Counter.Scaled body").locator(".cm-halted-line")).to_have_text("Scaled0 := n * k3;")
+    # the method's own variables show inline at the halt (k = 3, its result 0 so far), and the instance's n too
+    # (issue 25 item 6, ON-09): scan 2's c() made it 11 + 1 = 12 before the call
+    expect(editor(page, "Counter.Scaled body").locator(".cm-halted-line")).to_have_text("Scaled0 := n12 * k3;")
     page.screenshot(path=str(ARTIFACTS / "methods-breakpoint.png"))
 
 

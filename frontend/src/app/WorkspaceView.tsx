@@ -536,7 +536,9 @@ function PouView({ name }: { name: string }) {
   } else if (mode === "variables") {
     content = <VariablesView pou={pou} instancePicker={<InstancePicker pou={pou.name} />} />;
   } else if (mode === "methods") {
-    content = <MethodsView pou={pou} focus={focus?.member ? focus : null} />;
+    content = (
+      <MethodsView pou={pou} focus={focus?.member ? focus : null} instancePicker={<InstancePicker pou={pou.name} />} />
+    );
   } else if (mode === "st") {
     content = (
       <StView

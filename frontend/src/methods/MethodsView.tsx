@@ -2,16 +2,19 @@
 // and properties listed, their access (PUBLIC/PRIVATE/PROTECTED/INTERNAL), FINAL and ABSTRACT set (an FB's only:
 // nothing extends a program),
 // added, renamed (with every call, previewed: the tree's rename dialog) and deleted; a method's result type, declarations and body, and a property's type and GET / SET
-// texts, edited in the ST editor with the live check's diagnostics; breakpoints in a method's body, and its own
-// variables' values inline while the scan is halted in a call of it.
-import { useState, type FormEvent } from "react";
+// texts, edited in the ST editor with the live check's diagnostics; breakpoints in a method's body; online, the
+// FB instance's variables a body names inline, live (writable as in the FB body), and a method's own variables'
+// values while the scan is halted in a call of it (read only).
+import { useState, type FormEvent, type ReactNode } from "react";
 import type { Accessor, Method, Pou, Property } from "../generated/api";
 import { useTextDebug } from "../breakpointPlaces/useTextDebug";
 import { useOnline } from "../online/store";
 import type { Focus } from "../store/panels";
-import { useCallValues } from "../st/callValues";
 import { StEditor } from "../st/StEditor";
+import { StOnlineBar } from "../st/StOnlineBar";
 import { useStAssist } from "../st/useStAssist";
+import { useStOnline, type StMember } from "../st/useStOnline";
+import type { Scope } from "../st/members";
 import { workspaceStore } from "../store/project";
 import { FormError } from "../ui/FormError";
 import { RenameDialog } from "../tree/lazyDialogs";
@@ -41,7 +44,16 @@ const MODIFIER_MEANING = {
   abstract: "ABSTRACT: no body here; the function block is ABSTRACT and a derived one implements it",
 };
 
-export function MethodsView({ pou, focus }: { pou: Pou; focus: Focus | null }) {
+/** `instancePicker`: the shell's choice of the FB instance the bodies show online (the FB body's too). */
+export function MethodsView({
+  pou,
+  focus,
+  instancePicker,
+}: {
+  pou: Pou;
+  focus: Focus | null;
+  instancePicker?: ReactNode;
+}) {
   const [selected, setSelected] = useState<string | null>(
     focus?.member ?? pou.methods?.[0]?.name ?? pou.properties?.[0]?.name ?? null,
   );
@@ -130,6 +142,7 @@ export function MethodsView({ pou, focus }: { pou: Pou; focus: Focus | null }) {
             kind={found.kind}
             member={found.member}
             readOnly={online ? "Online: go offline to edit." : null}
+            instancePicker={instancePicker}
             onRename={(text) => {
               // refused here at once (a taken name); else the preview of every call it changes
               const edited = renameMember(pou, found.member.name, text);
@@ -192,8 +205,10 @@ function MemberEditor({
   onRename,
   onDelete,
   focus,
+  instancePicker,
 }: {
   focus: Focus | null;
+  instancePicker?: ReactNode;
   pou: Pou;
   kind: MemberKind;
   member: Method | Property;
@@ -202,7 +217,7 @@ function MemberEditor({
   onDelete(): void;
 }) {
   const [rename, setRename] = useState(member.name);
-  const { diagnostics, completions } = useStAssist(pou);
+  const { diagnostics, completions, scope } = useStAssist(pou);
   /** A text or field of the member changed: the FB is unsaved (a draft is kept), as any edit of a POU's text. */
   const change = <T extends Method | Property>(update: (m: T) => T) => {
     const edited = changeMember<T>(pou, member.name, update);
@@ -214,26 +229,34 @@ function MemberEditor({
   };
   const typeField = kind === "method" ? ((member as Method).return_type ?? "") : (member as Property).type;
   const debug = useTextDebug(`${pou.name}.${member.name}`); // the engine's POU of a method: FB.M
-  // halted in a call of the method: its own variables' values inline
-  const call = useCallValues(kind === "method" ? `${pou.name}.${member.name}` : null, (member as Method).body ?? "");
-  const text = (label: string, value: string, file: string, onChange: (text: string) => void, debugged = false) => (
-    <div key={file} style={{ flex: "1 1 0", minHeight: "6rem", overflow: "hidden", borderBottom: "1px solid #ccc" }}>
-      <StEditor
-        text={value}
-        onChange={onChange}
-        file={file}
-        diagnostics={diagnostics}
-        completions={completions}
-        readOnly={readOnly}
-        label={label}
-        debug={debugged ? debug : undefined}
-        online={debugged ? call : undefined}
-        focusLine={
-          focus?.line != null && file.endsWith(`/${focus.part ?? "body"}`) ? { line: focus.line, seq: focus.seq } : null
-        }
+  const focusLine = (file: string) =>
+    focus?.line != null && file.endsWith(`/${focus.part ?? "body"}`) ? { line: focus.line, seq: focus.seq } : null;
+  /** A declarations text, or a body (`of`: the member whose own declarations it sees) with its values online. */
+  const text = (
+    label: string,
+    value: string,
+    file: string,
+    onChange: (text: string) => void,
+    of?: Omit<StMember, "file">,
+  ) => {
+    const editor = { text: value, onChange, file, diagnostics, completions, readOnly, label };
+    return of ? (
+      <MemberBody
+        key={file}
+        pou={pou}
+        scope={scope}
+        member={{ ...of, file }}
+        editor={editor}
+        debug={of.call ? debug : undefined}
+        instancePicker={instancePicker}
+        focusLine={focusLine(file)}
       />
-    </div>
-  );
+    ) : (
+      <div key={file} style={{ flex: "1 1 0", minHeight: "6rem", overflow: "hidden", borderBottom: "1px solid #ccc" }}>
+        <StEditor {...editor} focusLine={focusLine(file)} />
+      </div>
+    );
+  };
   return (
     <>
       <div className="methods-header" style={{ display: "flex", gap: "0.5rem", alignItems: "center" }}>
@@ -313,7 +336,11 @@ function MemberEditor({
               (member as Method).body ?? "",
               memberFile(pou.name, member.name, "body"),
               (t) => change<Method>((m) => ({ ...m, body: t })),
-              true,
+              {
+                name: member.name,
+                declarations: (member as Method).declarations ?? "",
+                call: `${pou.name}.${member.name}`,
+              },
             ),
           ]
         : (["get", "set"] as const).flatMap((which) => {
@@ -336,10 +363,52 @@ function MemberEditor({
                     accessor.body ?? "",
                     memberFile(pou.name, member.name, "body", which),
                     update("body"),
+                    { name: member.name, declarations: accessor.declarations ?? "", call: null },
                   ),
                 ]
               : [];
           })}
     </>
+  );
+}
+
+/**
+ * A method's or accessor's body: online, its FB instance's variables inline (the instance chosen as for the FB body,
+ * or the halted call's), and a method's own while halted in it (st/useStOnline.tsx, the FB body's function).
+ */
+function MemberBody({
+  pou,
+  scope,
+  member,
+  editor,
+  debug,
+  focusLine,
+  instancePicker,
+}: {
+  pou: Pou;
+  scope: Scope;
+  member: StMember;
+  editor: Omit<Parameters<typeof StEditor>[0], "online" | "debug" | "focusLine">;
+  debug: Parameters<typeof StEditor>[0]["debug"];
+  focusLine: { line: number; seq: number } | null;
+  instancePicker?: ReactNode;
+}) {
+  const online = useStOnline(pou, editor.text, scope, member);
+  return (
+    <div
+      style={{
+        flex: "1 1 0",
+        minHeight: "6rem",
+        display: "flex",
+        flexDirection: "column",
+        borderBottom: "1px solid #ccc",
+      }}
+    >
+      <StOnlineBar online={online} instancePicker={instancePicker} />
+      <div style={{ flex: "1 1 auto", minHeight: 0, overflow: "hidden" }}>
+        <StEditor {...editor} debug={debug} online={online.view} focusLine={focusLine} />
+      </div>
+      {online.overlay}
+    </div>
   );
 }

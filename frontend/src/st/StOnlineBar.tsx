@@ -14,9 +14,9 @@ export function StOnlineBar({ online, instancePicker }: { online: StOnline; inst
         <input type="checkbox" checked={online.showValues} onChange={(e) => online.setShowValues(e.target.checked)} />{" "}
         Show values inline
       </label>
-      {online.instance ? (
-        <span className="st-online-instance">Instance {online.instance}</span>
-      ) : online.view ? (
+      {online.instance ? <span className="st-online-instance">Instance {online.instance}</span> : null}
+      {online.instance && online.callShown ? <span>The halted call&apos;s own variables: read only.</span> : null}
+      {online.instance ? null : online.view ? (
         <span>The halted call&apos;s values.</span>
       ) : (
         <span>No instance shown.</span>

@@ -62,3 +62,19 @@ export function useCallValues(pou: string | null, text: string): CallView | unde
   const call = useOnline((s) => (pou ? haltedCall(s.monitor, pou) : null));
   return useMemo(() => (call ? callView(text, call) : undefined), [call, text]);
 }
+
+/**
+ * A method body's view online: the instance's variables (`view`, writable) and, while halted in the call, its own
+ * (`call`, read only: no menu, no prepare); either alone when the other is missing.
+ */
+export function withCall(view: CallView | undefined, call: CallView | undefined): CallView | undefined {
+  if (!view || !call) return view ?? call;
+  const own = new Set(call.occurrences);
+  return {
+    occurrences: [...view.occurrences, ...call.occurrences],
+    marks: [...view.marks, ...call.marks].sort((a, b) => a.pos - b.pos),
+    describe: (o) => (own.has(o) ? call.describe(o) : view.describe(o)),
+    onMenu: (o, x, y) => (own.has(o) ? undefined : view.onMenu(o, x, y)),
+    onPrepare: (o) => (own.has(o) ? undefined : view.onPrepare(o)),
+  };
+}

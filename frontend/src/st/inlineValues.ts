@@ -62,13 +62,14 @@ function plainIndices(
   open: number,
   scope: Scope,
   instance: string,
+  hidden: ReadonlySet<string>,
 ): { indices: ElementAccess["indices"]; close: number } | null {
   const indices: ElementAccess["indices"] = [];
   for (let i = open + 1; ; i += 2) {
     const t = tokens[i];
     if (!t) return null;
     if (t.style === "variableName") {
-      const type = typeOfChain([t.text], scope);
+      const type = hidden.has(t.text.toUpperCase()) ? null : typeOfChain([t.text], scope);
       const path = type !== null && hasValue(type, scope) ? operandPath(t.text, instance, scope.symbols) : null;
       if (!path) return null;
       indices.push({ path });
@@ -80,8 +81,24 @@ function plainIndices(
   }
 }
 
-/** Every variable occurrence in `text` with a value, as paths of POU instance `instance`. */
-export function variableOccurrences(text: string, scope: Scope, instance: string): Occurrence[] {
+/** `THIS^.` or `SUPER^.` opening at token `i` (an FB's or method's own instance, ST-OO): the token after it, else i. */
+function pastSelf(tokens: readonly Token[], i: number): number {
+  const self = /^(THIS|SUPER)$/i.test(tokens[i]!.text) && tokens[i + 1]?.text === "^" && tokens[i + 2]?.text === ".";
+  return self && tokens[i + 3]?.style === "variableName" ? i + 3 : i;
+}
+
+const NONE: ReadonlySet<string> = new Set();
+
+/**
+ * Every variable occurrence in `text` with a value, as paths of POU instance `instance`; a bare name in `hidden`
+ * (upper case: a method's own variable, methodScope.ts) is not the instance's, `THIS^.x` and `SUPER^.x` are.
+ */
+export function variableOccurrences(
+  text: string,
+  scope: Scope,
+  instance: string,
+  hidden: ReadonlySet<string> = NONE,
+): Occurrence[] {
   const tokens = tokenize(text).filter((t) => t.style !== null);
   const out: Occurrence[] = [];
   let depth = 0;
@@ -90,20 +107,25 @@ export function variableOccurrences(text: string, scope: Scope, instance: string
     if (t.text === "(") depth += 1;
     else if (t.text === ")") depth = Math.max(0, depth - 1);
     if (t.style !== "variableName") continue;
-    const chain = [t.text];
-    let end = i;
+    const start = pastSelf(tokens, i);
+    const chain = [tokens[start]!.text];
+    let end = start;
     while (tokens[end + 1]?.text === "." && tokens[end + 2]?.style === "variableName") {
       chain.push(tokens[end + 2]!.text);
       end += 2;
     }
     const next = tokens[end + 1]?.text;
+    if (start === i && hidden.has(t.text.toUpperCase())) {
+      i = end; // the member's own (`own.x` too): not the instance's
+      continue;
+    }
     const formal = depth > 0 && chain.length === 1 && (next === ":=" || next === "=>");
     const type = formal ? null : typeOfChain(chain, scope);
     const path = type !== null ? operandPath(chain.join("."), instance, scope.symbols) : null;
     if (path && type && hasValue(type, scope))
       out.push({ from: t.from, to: tokens[end]!.to, text: text.slice(t.from, tokens[end]!.to), path, type });
     const array = path && type && next === "[" ? arrayOf(type) : null;
-    const index = array ? plainIndices(tokens, end + 1, scope, instance) : null;
+    const index = array ? plainIndices(tokens, end + 1, scope, instance, hidden) : null;
     if (path && array && index && index.indices.length === array.lows.length && tokens[index.close + 1]?.text !== ".") {
       const to = tokens[index.close]!.to;
       const element = { indices: index.indices, lows: array.lows };

@@ -8,6 +8,7 @@ import { useWorkspace } from "../store/project";
 import { memberCompletions, stCompletions, type StCompletions } from "./completion";
 import type { Scope } from "./members";
 import { stScope, workingLibrary } from "./scope";
+import { withInherited } from "./methodScope";
 import { useLiveCheck } from "../store/useLiveCheck";
 
 export function useStAssist(pou: Pou): { diagnostics: Diagnostic[]; completions: StCompletions; scope: Scope } {
@@ -19,7 +20,11 @@ export function useStAssist(pou: Pou): { diagnostics: Diagnostic[]; completions:
   const pous = project?.pous;
   const library = useMemo(() => workingLibrary(saved, pous ?? []), [saved, pous]);
   const diagnostics = useLiveCheck(project);
-  const scope = useMemo(() => stScope(table, declarations, types, library), [table, declarations, types, library]);
+  // a function block's instance holds the variables of the FBs it EXTENDS too
+  const scope = useMemo(
+    () => withInherited(stScope(table, declarations, types, library), pou, pous ?? []),
+    [table, declarations, types, library, pou, pous],
+  );
   const completions = useMemo(
     (): StCompletions => ({
       options: stCompletions([...scope.symbols], library),

@@ -77,4 +77,64 @@ describe("useStOnline (issue 9: ST online values, values of the halt)", () => {
     fireEvent.click(screen.getByRole("button", { name: "OK" }));
     expect(write).toHaveBeenCalledWith("MAIN.C1.COUNT", 42);
   });
+
+  it("shows a method's FB instance variables live and its own from the halted call, the own ones read only (issue 25 item 6; ON-03, ON-09)", () => {
+    const member = {
+      name: "Bump",
+      declarations: "VAR_INPUT\n    Inc : INT;\nEND_VAR",
+      call: "Counter.Bump",
+      file: "Counter.Bump/body",
+    };
+    const text = "Count := Count + Inc;";
+    const incOf = (value: number) => ({ name: "Inc", kind: "input" as const, type: { name: "INT" }, value });
+    act(() =>
+      onlineStore.setState({
+        phase: "online",
+        instances: { Counter: "MAIN.C1" },
+        monitor: { ...emptyMonitor, values: { "MAIN.C1.COUNT": 4 } },
+      }),
+    );
+    const write = vi.fn();
+    onlineStore.setState({ write });
+    const { result } = renderHook(() => useStOnline(counter, text, scope, member));
+    expect(onlineStore.getState().views["st:Counter.Bump/body"]?.paths).toEqual(["MAIN.C1.COUNT"]);
+    expect(result.current.view?.marks.map((m) => [m.pos, m.shown.text])).toEqual([
+      [5, "4"],
+      [14, "4"],
+    ]); // not halted: no value for the call's own Inc
+    // halted in the method on instance MAIN.C2: its Count, and Inc = 2 from the call stack
+    act(() =>
+      onlineStore.setState({
+        monitor: {
+          ...emptyMonitor,
+          state: "halted",
+          at: { pou: "COUNTER.BUMP", instance: "MAIN.C2", line: 1 },
+          stack: [{ kind: "method", at: { pou: "COUNTER.BUMP", instance: "MAIN.C2", line: 1 }, variables: [incOf(2)] }],
+          values: { "MAIN.C2.COUNT": 9 },
+        },
+      }),
+    );
+    expect(result.current.instance).toBe("MAIN.C2");
+    expect(result.current.callShown).toBe(true);
+    expect(result.current.view?.marks.map((m) => [m.pos, m.shown.text])).toEqual([
+      [5, "9"],
+      [14, "9"],
+      [20, "2"],
+    ]);
+    const [, , inc] = result.current.view!.occurrences;
+    expect(result.current.view?.describe(inc!)).toBe("Inc : INT = 2 (this call's input)");
+    act(() => result.current.view?.onMenu(inc!, 10, 10));
+    expect(result.current.overlay).toBeTruthy();
+    const { rerender, unmount } = render(<>{result.current.overlay}</>);
+    expect(screen.queryByRole("menuitem")).toBeNull(); // the call's own variable has no path: no write or force
+    // the instance's Count is written from the method body as from the FB body: the halted call's instance's
+    act(() => result.current.view!.onMenu(result.current.view!.occurrences[0]!, 10, 10));
+    rerender(<>{result.current.overlay}</>);
+    fireEvent.click(screen.getByRole("menuitem", { name: "Write value of Count…" }));
+    rerender(<>{result.current.overlay}</>);
+    fireEvent.change(screen.getByLabelText("Value"), { target: { value: "42" } });
+    fireEvent.click(screen.getByRole("button", { name: "OK" }));
+    expect(write).toHaveBeenCalledWith("MAIN.C2.COUNT", 42);
+    unmount();
+  });
 });

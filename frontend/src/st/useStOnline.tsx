@@ -4,7 +4,9 @@
 // double-click (CODESYS) and offers write / force / release from a right click with the LD
 // editor's menu and value prompt. An array element `a[i]` acts on the element `i` names now.
 // An IL body also shows the accumulator after each line (ilOnline.ts), from the instance's probes. A FUNCTION has
-// no instance: its own variables show while the scan is halted in a call of it (callValues.ts).
+// no instance: its own variables show while the scan is halted in a call of it (callValues.ts). A METHOD's or
+// property accessor's body (the Methods tab) shows its FB instance's variables so, and a method's own from the
+// call stack while halted in it (methodScope.ts: its own names hide the FB's).
 import { useEffect, useMemo, useState, type ReactNode } from "react";
 import type { Pou } from "../generated/api";
 import { MenuList } from "../ui/MenuList";
@@ -22,7 +24,8 @@ import {
   type Occurrence,
   type StOnlineView,
 } from "./inlineValues";
-import { useCallValues } from "./callValues";
+import { useCallValues, withCall } from "./callValues";
+import { ownNames } from "./methodScope";
 import { accumulatorMarks } from "./ilOnline";
 import type { Scope } from "./members";
 
@@ -36,9 +39,25 @@ export interface StOnline {
   view?: StOnlineView & { marks: readonly InlineMark[] };
   /** The context menu and value prompt, when open. */
   overlay: ReactNode;
+  /** The halted call's own variables show (read only). */
+  callShown: boolean;
 }
 
-export function useStOnline(pou: Pou, body: string, scope: Scope): StOnline {
+/** A METHOD or property accessor of the function block whose body the editor shows. */
+export interface StMember {
+  /** As declared: its result variable has this name. */
+  name: string;
+  /** Its declarations: its own variables, which hide the FB's. */
+  declarations: string;
+  /** The engine's POU of a method (`FB.M`), where the scan halts and the call stack names it; null for an accessor. */
+  call: string | null;
+  /** The body's file (methods/members.ts memberFile), naming the subscription. */
+  file: string;
+}
+
+const NO_NAMES: ReadonlySet<string> = new Set();
+
+export function useStOnline(pou: Pou, body: string, scope: Scope, member?: StMember): StOnline {
   const phase = useOnline((s) => s.phase);
   const monitor = useOnline((s) => s.monitor);
   const prepared = useOnline((s) => s.prepared);
@@ -47,14 +66,20 @@ export function useStOnline(pou: Pou, body: string, scope: Scope): StOnline {
   const [prompt, setPrompt] = useState<{ occurrence: Occurrence; action: "write" | "force" | "prepare" } | null>(null);
   const live = phase !== "offline";
   const at = haltedAt(monitor);
-  const haltedHere = at?.instance && at.pou.toUpperCase() === pou.name.toUpperCase() ? at.instance.toUpperCase() : null;
+  const here = (member?.call ?? pou.name).toUpperCase();
+  const haltedHere = at?.instance && at.pou.toUpperCase() === here ? at.instance.toUpperCase() : null;
   const shown = useShownInstance(pou);
   const instance = haltedHere ?? shown;
-  const key = `st:${pou.name}`;
+  const key = `st:${member?.file ?? pou.name}`;
+  const [ownName, ownDeclarations] = [member?.name, member?.declarations];
+  const hidden = useMemo(
+    () => (ownName === undefined ? NO_NAMES : ownNames(ownName, ownDeclarations ?? "")),
+    [ownName, ownDeclarations],
+  );
 
   const occurrences = useMemo(
-    () => (live && instance ? variableOccurrences(body, scope, instance) : []),
-    [live, instance, body, scope],
+    () => (live && instance ? variableOccurrences(body, scope, instance, hidden) : []),
+    [live, instance, body, scope, hidden],
   );
   const paths = useMemo(() => [...new Set(occurrences.map((o) => o.path))], [occurrences]);
   const il = pou.language === "il";
@@ -129,7 +154,7 @@ export function useStOnline(pou: Pou, body: string, scope: Scope): StOnline {
       ) : null}
     </>
   );
-  const call = useCallValues(pou.kind === "function" ? pou.name : null, body);
+  const call = useCallValues(member ? member.call : pou.kind === "function" ? pou.name : null, body);
   const called = call && !showValues ? { ...call, marks: [] } : call;
-  return { live, instance, showValues, setShowValues, view: view ?? called, overlay };
+  return { live, instance, showValues, setShowValues, view: withCall(view, called), overlay, callShown: !!call };
 }
