@@ -378,4 +378,5 @@ def check_method_recursion(checker: Any, methods: list[PouInfo], blocks: list[Po
 
     for method in methods:
         if id(method) not in done and visit(method, [method], []):
-            return
+            break
+    del visit  # the closure calls itself: a reference cycle that kept the checker (and its result) until a collection
