@@ -9,16 +9,18 @@ Pauses nest and overlap across threads (the server builds in worker threads): th
 counted under a lock, the first turns the collector off (when it was on) and the last one
 to end turns it back on, so no interleaving of two builds can leave it off for good.
 
-When the last pause ends, one collection of the two young generations (``gc.collect(1)``) runs
-over everything allocated meanwhile: the build's cyclic garbage (AST, symbol tables and IR nodes
-point at each other) is freed at once, and what survives (the compiled program of a simulation)
-moves to the oldest generation the way CPython counts it, so its own rule for full collections
-stays in force. That collection costs what one pass over the build's objects costs (about
-0.1-0.3 s for a 10,000-network diagram, a few milliseconds for a typical project), once per build
-and in the build's own thread, instead of at a random later moment (in a scan, say). An earlier
-version handed the build's objects to the oldest generation without a collection (``gc.freeze()``
-+ ``gc.unfreeze()``): CPython does not count objects moved that way, so full collections never
-came and every check leaked its garbage (~130 KB per ``/api/check``; issue 18).
+When the last pause ends, one collection of the two young generations (``gc.collect(1)``) runs over
+everything allocated meanwhile: what cyclic garbage the build left is freed at once, and what
+survives (the IR, the compiled program of a simulation) moves to the oldest generation the way
+CPython counts it, so its own rule for full collections stays in force. The lowering leaves no
+cycles (tests/ir/test_build_memory.py): the check it drops is freed by reference counts as it ends,
+so this collection traverses mostly what survives. That collection costs what one pass over the
+build's objects costs (about 0.1-0.15 s for a 10,000-network diagram, a few milliseconds for a
+typical project), once per build and in the build's own thread, instead of at a random later moment
+(in a scan, say). An earlier version handed the build's objects to the oldest generation without a
+collection (``gc.freeze()`` + ``gc.unfreeze()``): CPython does not count objects moved that way, so
+full collections never came and every check leaked its garbage (~130 KB per ``/api/check``; issue
+18).
 """
 
 from __future__ import annotations

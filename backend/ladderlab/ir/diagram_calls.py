@@ -271,7 +271,7 @@ def check_call(
     ``context`` is the type of the variable a function's result is written to, which its literals and generic
     type adapt to as in ``y := F(...)`` (st/context_typing.py). The first box of a shape that checks without a
     word also gives that shape its template (diagram_shapes); later boxes of the shape use it."""
-    shape = ops.shapes.shape(callee.name, instance, inputs, outputs, en, eno, context)
+    shape = ops.shapes.shape(ops, callee.name, instance, inputs, outputs, en, eno, context)
     if shape is not None:
         template = ops.shapes.templates.get(shape.key)
         if template is not None:
@@ -302,7 +302,7 @@ def _learn(
     context: t.Type | None,
 ) -> None:
     """Check and lower the shape's call with placeholders; it becomes the template unless anything was reported."""
-    holders = ops.shapes.placeholders(shape, inputs, en)
+    holders = ops.shapes.placeholders(ops, shape, inputs, en)
     template = None
     with ops.muted() as reported:
         node = _check(

@@ -75,7 +75,7 @@ class Operands:
         self._parsed: dict[str, tuple[ast.Expr | None, list[Diagnostic]]] = {}  # by the parser, never annotated
         self._shapes: dict[str, tuple | None] = {}  # stripped operand text -> its quick shape (see _quick_parse)
         self.callees: dict[str, Any] = {}  # upper-case name -> diagram_calls.Callee, resolved once per POU
-        self.shapes = CallShapes(self)  # box call templates (diagram_calls)
+        self.shapes = CallShapes()  # box call templates (diagram_calls)
         self._temps: dict[IrType, list[Var]] = {}
         self._used: dict[IrType, int] = {}
         #: every temporary its own slot kept between scans (a CFC chart with jumps: a value whose producer a jump

@@ -86,15 +86,17 @@ class Template:
 
 
 class CallShapes:
-    """The call templates of one diagram POU by shape key (None: that shape has none)."""
+    """The call templates of one diagram POU by shape key (None: that shape has none). The POU's ``Operands``, which
+    own this object, come with each call: kept here they were a reference cycle holding the POU's check until a
+    collection (issue 27)."""
 
-    def __init__(self, ops: Operands):
-        self.ops = ops
+    def __init__(self) -> None:
         self.templates: dict[tuple, Template | None] = {}
         self._count = 0
 
     def shape(
         self,
+        ops: Operands,
         callee: str,
         instance: str | None,
         inputs: dict[str, Any],
@@ -110,7 +112,7 @@ class CallShapes:
         leaves: dict[str, Leaf] = {}
         parts: list[Any] = [callee, eno is not None, context]
         if instance is not None:
-            leaf = self._variable(instance, fb=True)
+            leaf = self._variable(ops, instance, fb=True)
             if leaf is None:
                 return None
             leaves[""] = leaf
@@ -119,7 +121,7 @@ class CallShapes:
             leaves["ENO"] = Leaf(("eno",), eno, t.BOOL)
         pins = sorted(inputs.items()) if en is None else [("EN", en), *sorted(inputs.items())]
         for pin, value in pins:
-            part = self._part(pin, value, leaves)
+            part = self._part(ops, pin, value, leaves)
             if part is None:
                 return None
             parts.append((pin, part))
@@ -130,25 +132,25 @@ class CallShapes:
             return None
         return Shape(key, leaves)
 
-    def placeholders(self, shape: Shape, inputs: dict[str, Any], en: Any) -> Placeholders:
+    def placeholders(self, ops: Operands, shape: Shape, inputs: dict[str, Any], en: Any) -> Placeholders:
         """The call of ``shape`` with fresh placeholder variables for its leaves (``inputs``/``en``: a box's own)."""
         names = {pin: self._name() for pin in (*shape.leaves, RESULT)}
-        values = {pin: self._placeholder(names[pin], leaf) for pin, leaf in shape.leaves.items()}
+        values = {pin: self._placeholder(ops, names[pin], leaf) for pin, leaf in shape.leaves.items()}
         instance, eno_wire = values.pop("", None), values.pop("ENO", None)
         return Placeholders(
             names,
             {pin: values.get(pin, value) for pin, value in inputs.items()},
-            self.ops.wire_node(*instance) if instance is not None else None,
+            ops.wire_node(*instance) if instance is not None else None,
             values.get("EN", en),
             eno_wire[0] if eno_wire is not None else None,
             Var("local", names[RESULT], BOOL),
         )  # the result is only ever a target: its type is never read
 
     # ------------------------------------------------------------ leaves
-    def _part(self, pin: str, value: Any, leaves: dict[str, Leaf]) -> tuple | None:
+    def _part(self, ops: Operands, pin: str, value: Any, leaves: dict[str, Leaf]) -> tuple | None:
         """The shape key of one input; a leaf's value goes to ``leaves``."""
         if isinstance(value, str):
-            leaf = self._variable(value, fb=False)
+            leaf = self._variable(ops, value, fb=False)
             if leaf is None:
                 return ("text", value)
         elif isinstance(value, tuple):
@@ -157,7 +159,7 @@ class CallShapes:
                 return ("const", expr.value, ty)
             leaf = Leaf(("wire", *_types(ty, expr.type)), expr, ty)
         elif isinstance(value, ast.Unary) and value.op == "NOT" and type(value.operand) is ast.Name:
-            inner = self._variable(value.operand.name, fb=False)
+            inner = self._variable(ops, value.operand.name, fb=False)
             if inner is None:
                 return None
             leaf = Leaf(("NOT", *inner.key), inner.value, inner.ty)
@@ -166,10 +168,10 @@ class CallShapes:
         leaves[pin] = leaf
         return leaf.key
 
-    def _variable(self, text: str, fb: bool) -> Leaf | None:
+    def _variable(self, ops: Operands, text: str, fb: bool) -> Leaf | None:
         """A named variable as a leaf, or None: an FB instance when ``fb``, else an elementary variable or an
         elementary output of an FB instance (``t1.Q``: the key names the FB type and the pin)."""
-        named = self.ops.named_variable(text)
+        named = ops.named_variable(text)
         if named is None or named[0].constant:
             return None
         symbol, member = named
@@ -180,7 +182,7 @@ class CallShapes:
             wanted = instance if member is not None else type(symbol.type) is t.Elementary
         if not wanted:
             return None
-        read = self.ops.clean_read(text)
+        read = ops.clean_read(text)
         if read is None:
             return None
         value, ty = read
@@ -196,13 +198,13 @@ class CallShapes:
         self._count += 1
         return f"{PLACEHOLDER}{self._count}"
 
-    def _placeholder(self, name: str, leaf: Leaf) -> Any:
+    def _placeholder(self, ops: Operands, name: str, leaf: Leaf) -> Any:
         """A leaf's value in the template's call: a wire (for the checker, a name of the leaf's type), under NOT
         when the leaf is negated (typed as the checker types it, for EN, which standard calls leave untyped)."""
         wire = (Var("local", name, leaf.value.type), leaf.ty)
         if leaf.key[0] != "NOT":
             return wire
-        negated = ast.Unary("NOT", self.ops.wire_node(*wire))
+        negated = ast.Unary("NOT", ops.wire_node(*wire))
         negated.ty = leaf.ty
         return negated
 

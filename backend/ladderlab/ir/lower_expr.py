@@ -53,11 +53,11 @@ from .nodes import (
     Fit,
     FnCall,
     Index,
-    Member,
     Stmt,
     Unary,
     Var,
     View,
+    member,
 )
 from .types import BOOL, Array, Elementary, FbInstance, IrType, Reference, Struct, Subrange, describe
 
@@ -308,7 +308,7 @@ def _access(node: ast.Expr, ctx: PouContext) -> Var:
         )
     if isinstance(node, ast.Member) and not is_part(node):
         base = lower_access(node.base, ctx)
-        return Var(base.scope, base.name, _member_type(node, base.type, ctx), (*base.path, Member(node.name.upper())))
+        return Var(base.scope, base.name, _member_type(node, base.type, ctx), (*base.path, member(node.name.upper())))
     if isinstance(node, ast.Index):
         return _index(node, ctx)
     if is_self(node):  # THIS^ / SUPER^ (st/methods.py)

@@ -470,26 +470,28 @@ class _Network:
     def _chain_types(self, block: _Chained, context: t.Type | None) -> dict[str, t.Type]:
         """The type of each block chained into ``block``: the one ST gives the nested call in its place."""
         nested: dict[str, ast.Call] = {}
-
-        def inputs_of(member: _Chained) -> dict[str, PinValue] | None:
-            found = dict(member.inputs)
-            for pin, producer in member.chained.items():
-                inner = self.chained.get(producer)
-                values = inputs_of(inner) if inner is not None else None
-                if inner is None or values is None:
-                    return None
-                call = call_ast(self.ops, inner.callee, ast.Name(inner.callee.name), values, {}, self.at(producer))
-                if call is None:
-                    return None
-                found[pin] = nested[producer] = call
-            return found
-
         with self.ops.muted():
-            inputs = inputs_of(block)
+            inputs = self._chained_inputs(block, nested)
         if inputs is None:
             return {}
         type_call(self.ops, block.callee, block.instance, inputs, self.at(block.node.id), block.en, context)
         return {name: call.ty for name, call in nested.items() if isinstance(call.ty, t.Elementary)}
+
+    def _chained_inputs(self, member: _Chained, nested: dict[str, ast.Call]) -> dict[str, PinValue] | None:
+        """``member``'s inputs with the blocks chained into it as nested calls (each also into ``nested`` by id);
+        None when one cannot be. (A method, not a closure calling itself: that was a reference cycle holding the
+        POU's check until a collection; issue 27.)"""
+        found = dict(member.inputs)
+        for pin, producer in member.chained.items():
+            inner = self.chained.get(producer)
+            values = self._chained_inputs(inner, nested) if inner is not None else None
+            if inner is None or values is None:
+                return None
+            call = call_ast(self.ops, inner.callee, ast.Name(inner.callee.name), values, {}, self.at(producer))
+            if call is None:
+                return None
+            found[pin] = nested[producer] = call
+        return found
 
     def _lower_block(self, block: _Chained, context: t.Type | None) -> None:
         """Check and lower a block in its place with the type its result is used as (None: its own)."""

@@ -82,21 +82,10 @@ def _lower_typed_project(project: Project, checked: CheckResult | None) -> Lower
     globals_ = lower_globals(checked, diagnostics)
     pous: dict[str, Pou] = {}
     models = {pou.name.upper(): pou for pou in project.pous}
-
-    def lower(pou: ModelPou, info: PouInfo) -> None:
-        """``pou`` and its methods; a base whose body ``pou`` runs (SUPER^()) first, as its slots are ``pou``'s."""
-        base = info.base if info.runs_base_body else None
-        if base is not None and base.name.upper() not in pous and base.name.upper() in models:
-            lower(models[base.name.upper()], base)
-        base_ir = pous.get(base.name.upper()) if base is not None else None
-        pous[pou.name.upper()] = lower_pou(pou, info, checked, diagnostics, image, base_ir)
-        for method in info.methods.values():
-            pous[method.name.upper()] = lower_pou(None, method, checked, diagnostics, image)
-
     for pou in project.pous:
         info = checked.pou(pou.name)
         if info is not None and info.name == pou.name and pou.name.upper() not in pous:  # (a duplicate: reported)
-            lower(pou, info)
+            _lower_with_base(pou, info, _Lowering(checked, diagnostics, image, models, pous))
     for interface in checked.interfaces.values():  # prototypes: what a call through an interface passes
         for prototype in interface.methods.values():
             pous[prototype.name.upper()] = lower_pou(None, prototype, checked, diagnostics, image)
@@ -111,6 +100,31 @@ def _lower_typed_project(project: Project, checked: CheckResult | None) -> Lower
     if too_much is not None:
         diagnostics.append(too_much)
     return LoweringResult(None if has_errors(diagnostics) else program, diagnostics)
+
+
+@dataclass
+class _Lowering:
+    """What lowering one POU after another shares: the check, the diagnostics, the located globals the bodies use,
+    the model's POUs by upper-case name and the IR POUs lowered so far."""
+
+    checked: CheckResult
+    diagnostics: list[Diagnostic]
+    image: dict[str, Slot]
+    models: dict[str, ModelPou]
+    pous: dict[str, Pou]
+
+
+def _lower_with_base(pou: ModelPou, info: PouInfo, done: _Lowering) -> None:
+    """``pou`` and its methods; a base whose body ``pou`` runs (SUPER^()) first, as its slots are ``pou``'s.
+    (A module function, not a closure calling itself: that closure was a reference cycle holding the check's
+    symbol tables until a collection; issue 27.)"""
+    base = info.base if info.runs_base_body else None
+    if base is not None and base.name.upper() not in done.pous and base.name.upper() in done.models:
+        _lower_with_base(done.models[base.name.upper()], base, done)
+    base_ir = done.pous.get(base.name.upper()) if base is not None else None
+    done.pous[pou.name.upper()] = lower_pou(pou, info, done.checked, done.diagnostics, done.image, base_ir)
+    for method in info.methods.values():
+        done.pous[method.name.upper()] = lower_pou(None, method, done.checked, done.diagnostics, done.image)
 
 
 def dispatch_tables(checked: CheckResult) -> dict[str, dict[str, str]]:

@@ -50,7 +50,6 @@ from .nodes import (
     FnCall,
     For,
     If,
-    Member,
     Origin,
     Repeat,
     Return,
@@ -58,6 +57,7 @@ from .nodes import (
     Unary,
     Var,
     While,
+    member,
 )
 from .types import BOOL, IrType
 
@@ -241,7 +241,7 @@ def _instance_call(
 
 def fb_output(instance: Var, name: str, ty: IrType) -> Var:
     """Output pin ``name`` (upper case) of an FB instance, as read after its call."""
-    return Var(instance.scope, instance.name, ty, (*instance.path, Member(name)))
+    return Var(instance.scope, instance.name, ty, (*instance.path, member(name)))
 
 
 def fb_pins(fb: t.FbType, ctx: PouContext) -> dict[str, tuple[IrType, str]]:

@@ -31,7 +31,18 @@ from ..st.printer import print_expression
 from ..st.rules import EnumValue, constant_value
 from ..st.symbols import CheckResult, PouInfo, Symbol, TypeDef
 from .nodes import ReferenceInit, Slot
-from .types import Array, Elementary, Enum, FbInstance, IrType, Reference, Struct, StructField, Subrange
+from .types import (
+    Array,
+    Elementary,
+    Enum,
+    FbInstance,
+    IrType,
+    Reference,
+    Struct,
+    StructField,
+    Subrange,
+    fb_instance,
+)
 
 #: SIZEOF of a pointer (POINTER TO, REF_TO): an address of a 32-bit target; a 64-bit CODESYS target has 8.
 POINTER_BYTES = 4
@@ -117,7 +128,7 @@ class TypeLowering:
         if isinstance(ty, t.StructType):
             return self._struct(ty, spec)
         if isinstance(ty, t.FbType):
-            return FbInstance(ty.name.upper())
+            return fb_instance(ty.name.upper())
         if isinstance(ty, t.InterfaceType):  # a reference to the instance of an FB implementing it (or NULL)
             return Reference(FbInstance(ty.name.upper()))
         if isinstance(ty, t.PointerType):

@@ -9,6 +9,7 @@ See docs/ir.md for the invariants.
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass, field
 from typing import Any, Literal, TypeVar
 
@@ -81,6 +82,13 @@ class Index:
 @dataclass(frozen=True, slots=True)
 class Member:
     name: str
+
+
+@functools.lru_cache(maxsize=4096)
+def member(name: str) -> Member:
+    """``Member(name)``, one object per name (immutable): every FB output a diagram reads (``T1.Q``) has one, and
+    each object is one more for a large build's memory and collections (issue 27)."""
+    return Member(name)
 
 
 @dataclass(frozen=True, slots=True)

@@ -6,6 +6,7 @@ syntax, so LD and FBD lowering produce the same types.
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 
 from ..iec.elementary import DEFAULT_STRING_LENGTH, ELEMENTARY, ElementaryType
@@ -68,6 +69,13 @@ class FbInstance:
     """An instance of a function block: a user FB POU or a standard FB (``TON``, ``CTU_DINT``...)."""
 
     fb: str
+
+
+@functools.lru_cache(maxsize=4096)
+def fb_instance(fb: str) -> FbInstance:
+    """``FbInstance(fb)``, one object per FB name (immutable): a 50,000-network diagram declares thousands of
+    instances of each FB, and each object is one more for the build's memory and collections (issue 27)."""
+    return FbInstance(fb)
 
 
 @dataclass(frozen=True)

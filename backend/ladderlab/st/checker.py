@@ -554,28 +554,30 @@ class ProjectChecker:
         """POU-02: a POU must not call or instantiate itself, directly or through others."""
         state: dict[str, int] = {}
         reported: set[str] = set()
-
-        def visit(name: str, path: list[str]) -> None:
-            state[name] = 1
-            for callee in sorted(self.result.pous[name].calls):
-                if callee not in self.result.pous:
-                    continue
-                if state.get(callee) == 1:
-                    cycle = path[path.index(callee) :] + [callee] if callee in path else [name, callee]
-                    if callee not in reported:
-                        reported.add(callee)
-                        names = " -> ".join(self.result.pous[c].name for c in cycle)
-                        pou = self.result.pous[callee]
-                        self._reporter(f"{pou.name}/body", pou.name)(
-                            "ST-RECURSION", f"recursive call {names}: POUs must not call themselves", None
-                        )
-                elif callee not in state:
-                    visit(callee, path + [callee])
-            state[name] = 2
-
         for name in self.result.pous:
             if name not in state:
-                visit(name, [name])
+                self._visit_calls(name, [name], state, reported)
+
+    def _visit_calls(self, name: str, path: list[str], state: dict[str, int], reported: set[str]) -> None:
+        """Depth first from ``name`` (``state``: 1 on the path, 2 done), reporting each cycle once. (A method, not a
+        closure calling itself: that closure was a reference cycle keeping the checker and its result alive until
+        a collection; issue 27.)"""
+        state[name] = 1
+        for callee in sorted(self.result.pous[name].calls):
+            if callee not in self.result.pous:
+                continue
+            if state.get(callee) == 1:
+                cycle = path[path.index(callee) :] + [callee] if callee in path else [name, callee]
+                if callee not in reported:
+                    reported.add(callee)
+                    names = " -> ".join(self.result.pous[c].name for c in cycle)
+                    pou = self.result.pous[callee]
+                    self._reporter(f"{pou.name}/body", pou.name)(
+                        "ST-RECURSION", f"recursive call {names}: POUs must not call themselves", None
+                    )
+            elif callee not in state:
+                self._visit_calls(callee, path + [callee], state, reported)
+        state[name] = 2
 
 
 def _elementary_decl(decl: ast.VarDecl) -> bool:

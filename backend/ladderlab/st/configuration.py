@@ -285,14 +285,22 @@ class _ScopeChecker(BodyChecker):
     """ST in the global scope (bindings, SINGLE): globals and direct addresses; reports at a JSON path."""
 
     def __init__(self, result: CheckResult, owner: _ConfigurationChecker, where: str | None = None):
-        super().__init__(result, None, self._located)
-        self.owner, self.where = owner, where
+        self.located = _Located(owner, where)
+        super().__init__(result, None, self.located)
 
     def at(self, where: str) -> _ScopeChecker:
-        self.where = where
+        self.located.where = where
         return self
 
-    def _located(self, code: str, message: str, node: Any, severity: str = "error") -> None:
+
+class _Located:
+    """A ``_ScopeChecker``'s reports, at the JSON path it checks now. (An object of its own: the checker's bound
+    method was a reference cycle that kept the project's check alive until a collection; issue 27.)"""
+
+    def __init__(self, owner: _ConfigurationChecker, where: str | None):
+        self.owner, self.where = owner, where
+
+    def __call__(self, code: str, message: str, node: Any, severity: str = "error") -> None:
         self.owner._report(code, message, self.where or "", severity)
 
 

@@ -15,6 +15,7 @@ ABSTRACT nor FINAL, and PROTECTED is PRIVATE.
 from __future__ import annotations
 
 import copy
+from collections.abc import Callable
 from typing import Any
 
 from ..iec.spelling import did_you_mean
@@ -388,19 +389,30 @@ def check_method_recursion(checker: Any, methods: list[PouInfo], blocks: list[Po
         file = method_file(fb.name, target.name[len(fb.name) + 1 :], "body")
         checker._reporter(file, target.name)("ST-RECURSION", message, None)
 
-    def visit(pou: PouInfo, path: list[PouInfo], calls: list[tuple[PouInfo, Any]]) -> bool:
-        """Depth first from ``pou`` (``calls``: the call into each of ``path`` after the first); True once a cycle
-        is reported (one report is enough)."""
-        for target, call in edges(pou):
-            if target in path:
-                start = path.index(target)
-                report([*path[start:], target], [*calls[start:], (pou, call)])
-                return True
-            if id(target) not in done and visit(target, [*path, target], [*calls, (pou, call)]):
-                return True
-        done.add(id(pou))
-        return False
-
     for method in methods:
-        if id(method) not in done and visit(method, [method], []):
+        if id(method) not in done and _visit_methods(method, [method], [], edges, report, done):
             return
+
+
+def _visit_methods(
+    pou: PouInfo,
+    path: list[PouInfo],
+    calls: list[tuple[PouInfo, Any]],
+    edges: Callable[[PouInfo], list[tuple[PouInfo, Any]]],
+    report: Callable[[list[PouInfo], list[tuple[PouInfo, Any]]], None],
+    done: set[int],
+) -> bool:
+    """Depth first from ``pou`` (``calls``: the call into each of ``path`` after the first); True once a cycle is
+    reported (one report is enough). (A module function, not a closure calling itself: that closure was a
+    reference cycle that kept the checker and its result alive until a collection; issue 27.)"""
+    for target, call in edges(pou):
+        if target in path:
+            start = path.index(target)
+            report([*path[start:], target], [*calls[start:], (pou, call)])
+            return True
+        if id(target) not in done and _visit_methods(
+            target, [*path, target], [*calls, (pou, call)], edges, report, done
+        ):
+            return True
+    done.add(id(pou))
+    return False

@@ -37,9 +37,36 @@ def expression_vars(e: ir.Expr | None) -> Iterator[ir.Var]:
     return (n for n in expression_nodes(e) if isinstance(n, ir.Var))
 
 
-def calls_in(e: ir.Expr | None) -> Iterator[ir.Call]:
-    """Every function call in an expression, index expressions included."""
-    return (n for n in expression_nodes(e) if isinstance(n, ir.Call))
+def calls_in(e: ir.Expr | None) -> list[ir.Call]:
+    """Every function call in an expression, outermost first, index expressions and arguments included. (Walked by
+    plain recursion, not ``expression_nodes``'s nested generators, at about half the cost: it runs for every
+    expression of a POU, ~0.2 s of generating a 50,000-network program's code.)"""
+    found: list[ir.Call] = []
+    if e is not None:
+        _calls(e, found)
+    return found
+
+
+def _calls(e: ir.Expr, found: list[ir.Call]) -> None:
+    kind = type(e)
+    if kind is ir.Var:
+        for selector in e.path:  # type: ignore[union-attr]
+            if type(selector) is ir.Index:
+                for index in selector.indices:
+                    _calls(index, found)
+    elif kind is ir.Binary:
+        _calls(e.left, found)  # type: ignore[union-attr]
+        _calls(e.right, found)  # type: ignore[union-attr]
+    elif kind is ir.Call:
+        found.append(e)  # type: ignore[arg-type]
+        for a in (*e.args, *e.in_outs):  # type: ignore[union-attr]
+            _calls(a, found)
+    elif kind is ir.Unary or kind is ir.Convert or kind is ir.Fit:
+        _calls(e.operand, found)  # type: ignore[union-attr]
+    elif kind is ir.AddressOf:
+        _calls(e.var, found)  # type: ignore[union-attr]
+    elif kind is ir.Attempt or kind is ir.View:
+        _calls(e.value, found)  # type: ignore[union-attr]
 
 
 def own_expressions(s: ir.Stmt) -> Iterable[ir.Expr | None]:

@@ -351,7 +351,7 @@ class Statements:
 
     def store(self, target: ir.Var, value: ir.Expr, probe: ir.Probe | None = None) -> None:
         forward = self.x.forward
-        if forward and (next(calls_in(value), None) is not None or next(calls_in(target), None) is not None):
+        if forward and (calls_in(value) or calls_in(target)):
             forward.clear()  # a call may write any variable before the read
         code, ty = self.x.access(target)
         if isinstance(ty, t.FbInstance):
@@ -939,7 +939,6 @@ def _only_probes(s: ir.If) -> bool:
         return False
     conditions = [cond for x in [s, *statements] if isinstance(x, ir.If) for cond, _ in x.branches]
     return all(
-        not any(isinstance(sel, ir.Index) for var in expression_vars(c) for sel in var.path)
-        and next(calls_in(c), None) is None
+        not any(isinstance(sel, ir.Index) for var in expression_vars(c) for sel in var.path) and not calls_in(c)
         for c in conditions
     )
