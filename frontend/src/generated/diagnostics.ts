@@ -1463,11 +1463,11 @@ export const DIAGNOSTICS = {
       anchor: "st-ref",
       area: "st",
       example:
-        "PROGRAM Main\nVAR CONSTANT limit : INT := 10; END_VAR\nVAR_TEMP t : INT; END_VAR\nVAR p : REF_TO INT; END_VAR\np := REF(limit);   (* or REF(t) *)",
+        "PROGRAM Main\nVAR CONSTANT limit : INT := 10; END_VAR\nVAR p : REF_TO INT; END_VAR\np := REF(limit);",
       example_language: "st",
       example_note:
-        "A reference to a CONSTANT (it could be written through the reference), to a program's or function block's VAR_TEMP, or to another function's result. A FUNCTION's own variables may be referred to: a reference used after the call returned is the runtime fault `dangling_reference` (ENGINE-RUNTIME).",
-      fix: "refer to a variable that outlives the call (a FUNCTION_BLOCK's or program's VAR, a global), or copy the constant into a variable.",
+        "A reference to a CONSTANT (it could be written through the reference) or to another function's result. A FUNCTION's own variables and the VAR_TEMP of a program, function block or method may be referred to: a reference used after the call returned is the runtime fault `dangling_reference` (ENGINE-RUNTIME).",
+      fix: "copy the constant into a variable and refer to that (or drop CONSTANT if the reference is to write it).",
       severity: "error",
       summary: "A reference (REF, ADR) to a variable that may not be referred to.",
     },
