@@ -117,6 +117,7 @@ def test_a_program_method_is_added_called_run_and_halted_in(page, server, tmp_pa
     debug.get_by_text("Halted at MAIN.ADD, line 1").wait_for()
     calls = debug.get_by_role("navigation", name="Call stack").locator("li")
     expect(calls).to_have_text(["MAIN, line 1", "MAIN.ADD (MAIN), line 1"])
-    # the method's own k = 1 and its result 0 so far inline (total is the program's: not a variable of the call)
-    expect(editor(page, "Main.Add body").locator(".cm-halted-line")).to_have_text("total := total + k1;")
+    # the method's own k = 1 inline, and the program's total as the halted scan 3 found it (26 after scan 2),
+    # as an FB's method body shows its instance's variables (issue 25 item 6, ON-09)
+    expect(editor(page, "Main.Add body").locator(".cm-halted-line")).to_have_text("total26 := total26 + k1;")
     page.screenshot(path=str(ARTIFACTS / "program-method-breakpoint.png"))

@@ -200,7 +200,7 @@ class Expressions:
         variable that is, if any (runtime.in_out_ref)."""
         var, ref = a.var, self.ref(a.var)
         derefs = [n for n, selector in enumerate(var.path) if isinstance(selector, ir.Deref)]
-        if derefs and next(calls_in(var), None) is None:  # (the pointer's pair is read again: no call in the path)
+        if derefs and not calls_in(var):  # (the pointer's pair is read again: no call in the path)
             pointer = self.ref(ir.Var(var.scope, var.name, var.type, var.path[: derefs[-1] + 1]))
             return f"ll_io_ref({pointer}, *{ref}, {a.text!r})"
         if var.scope == "local" and var.name.upper() in self.scope.framed:

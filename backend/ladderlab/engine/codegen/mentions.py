@@ -48,25 +48,24 @@ def calls_in(e: ir.Expr | None) -> list[ir.Call]:
 
 
 def _calls(e: ir.Expr, found: list[ir.Call]) -> None:
-    kind = type(e)
-    if kind is ir.Var:
-        for selector in e.path:  # type: ignore[union-attr]
+    if type(e) is ir.Var:
+        for selector in e.path:
             if type(selector) is ir.Index:
                 for index in selector.indices:
                     _calls(index, found)
-    elif kind is ir.Binary:
-        _calls(e.left, found)  # type: ignore[union-attr]
-        _calls(e.right, found)  # type: ignore[union-attr]
-    elif kind is ir.Call:
-        found.append(e)  # type: ignore[arg-type]
-        for a in (*e.args, *e.in_outs):  # type: ignore[union-attr]
+    elif type(e) is ir.Binary:
+        _calls(e.left, found)
+        _calls(e.right, found)
+    elif type(e) is ir.Call:
+        found.append(e)
+        for a in (*e.args, *e.in_outs):
             _calls(a, found)
-    elif kind is ir.Unary or kind is ir.Convert or kind is ir.Fit:
-        _calls(e.operand, found)  # type: ignore[union-attr]
-    elif kind is ir.AddressOf:
-        _calls(e.var, found)  # type: ignore[union-attr]
-    elif kind is ir.Attempt or kind is ir.View:
-        _calls(e.value, found)  # type: ignore[union-attr]
+    elif type(e) is ir.Unary or type(e) is ir.Convert or type(e) is ir.Fit:
+        _calls(e.operand, found)
+    elif type(e) is ir.AddressOf:
+        _calls(e.var, found)
+    elif type(e) is ir.Attempt or type(e) is ir.View:
+        _calls(e.value, found)
 
 
 def own_expressions(s: ir.Stmt) -> Iterable[ir.Expr | None]:
