@@ -133,3 +133,11 @@ def open_print(page):
     printed.on("pageerror", lambda error: errors.append(f"page error: {error}"))
     printed.on("console", lambda message: errors.append(message.text) if message.type == "error" else None)
     return printed, errors
+
+
+def double_click_online(element) -> None:
+    """Double-clicks an LD element online (CODESYS: a BOOL's value toggles into the prepared one) once the diagram
+    shows the element's value, as a user would: until the POU's symbol table has come (slow while the server
+    compiles under load) the diagram is not bound to the simulation and a double-click prepares nothing."""
+    element.locator(".ld-badge").first.wait_for()
+    element.locator(".ld-hit").dblclick()

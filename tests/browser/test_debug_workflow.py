@@ -20,7 +20,7 @@ import time
 import pytest
 
 from .conftest import ARTIFACTS
-from .steps import scan_count, settled_scan_count
+from .steps import double_click_online, scan_count, settled_scan_count
 
 pytestmark = pytest.mark.browser
 
@@ -79,7 +79,7 @@ def test_breakpoint_halt_step_continue_disable_and_single_cycle(page, server):
 
     # Start pressed while halted (writes act at once), then step: network 3 counts the rising edge
     # of Start within this scan, and StartCount shows it at the next halt.
-    page.locator('g.ld-element[data-id="start"] .ld-hit').dblclick()  # prepares TRUE (CODESYS)
+    double_click_online(page.locator('g.ld-element[data-id="start"]'))  # prepares TRUE (CODESYS)
     page.keyboard.press("Control+F7")  # writes the prepared value
     debug.get_by_role("button", name="Step network").click()
     debug.get_by_text("Halted at MAIN, network 3").wait_for()

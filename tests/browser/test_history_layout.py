@@ -11,7 +11,7 @@ import re
 import pytest
 
 from .conftest import ARTIFACTS
-from .steps import go_online, open_pou
+from .steps import double_click_online, go_online, open_pou
 
 pytestmark = pytest.mark.browser
 
@@ -53,7 +53,7 @@ def test_every_control_of_the_history_bar_is_inside_the_window_at_1024x768(page,
     for number in (1, 2):
         cycle.click()
         scan.filter(has_text=re.compile(f"^{number}$")).wait_for()
-    start.locator(".ld-hit").dblclick()
+    double_click_online(start)
     start.locator(".ld-prepared").filter(has_text="<TRUE>").wait_for()  # (Ctrl+F7 before it writes nothing)
     page.keyboard.press("Control+F7")  # a write: the timeline gets a mark
     for number in (3, 4):

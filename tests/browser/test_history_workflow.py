@@ -20,7 +20,7 @@ from tests.live_server import LiveServer
 
 from .bench_steps import expect_on
 from .conftest import ARTIFACTS
-from .steps import go_online, open_pou, store_project, watch
+from .steps import double_click_online, go_online, open_pou, store_project, watch
 
 pytestmark = pytest.mark.browser
 
@@ -47,7 +47,7 @@ def test_go_back_to_a_scan_and_see_the_diagram_as_it_was(page, server):
         scan.filter(has_text=re.compile(f"^{number}$")).wait_for()
     _coil(page, "off")
     start = page.locator('g.ld-element[data-id="start"]')
-    start.locator(".ld-hit").dblclick()  # prepares TRUE; Ctrl+F7 writes it before the next scan
+    double_click_online(start)  # prepares TRUE; Ctrl+F7 writes it before the next scan
     start.locator(".ld-prepared").filter(has_text="<TRUE>").wait_for()
     page.keyboard.press("Control+F7")
     for number in (4, 5, 6):
@@ -176,7 +176,7 @@ def test_the_timeline_marks_the_scan_a_breakpoint_halted_in(page, server):
     page.get_by_role("status", name="History view").filter(has_text="Viewing scan 3 (history)").wait_for()
 
     start = page.locator('g.ld-element[data-id="start"]')  # a force (F7) before scan 5: marked as an input
-    start.locator(".ld-hit").dblclick()
+    double_click_online(start)
     start.locator(".ld-prepared").filter(has_text="<TRUE>").wait_for()
     page.keyboard.press("F7")
     cycle.click()
@@ -335,7 +335,7 @@ def _start_written_before_scan_4(page, scan, cycle) -> None:
     """Three single cycles, Start prepared TRUE and written (Ctrl+F7: before the next scan), three more cycles."""
     _cycles(page, scan, cycle, (1, 2, 3))
     start = page.locator('g.ld-element[data-id="start"]')
-    start.locator(".ld-hit").dblclick()
+    double_click_online(start)
     start.locator(".ld-prepared").filter(has_text="<TRUE>").wait_for()
     page.keyboard.press("Control+F7")
     _cycles(page, scan, cycle, (4, 5, 6))

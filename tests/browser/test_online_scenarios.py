@@ -20,7 +20,7 @@ import urllib.request
 import pytest
 
 from .conftest import ARTIFACTS
-from .steps import go_online, open_pou, panel_tab, watch
+from .steps import double_click_online, go_online, open_pou, panel_tab, watch
 
 pytestmark = pytest.mark.browser
 
@@ -98,7 +98,7 @@ def test_force_with_f7_release_all_and_the_forced_count(page, server):
     open_main_online(page, server)
     forces = page.get_by_role("status", name="Active forces")
     page.locator("body").click(position={"x": 5, "y": 5})
-    element(page, "start").locator(".ld-hit").dblclick()  # prepares TRUE
+    double_click_online(element(page, "start"))  # prepares TRUE
     element(page, "start").locator(".ld-prepared").filter(has_text="<TRUE>").wait_for()
     page.keyboard.press("F7")
     forces.filter(has_text="1 forced").wait_for()
@@ -129,7 +129,7 @@ def test_write_prepared_values_with_ctrl_f7_and_in_place(page, server):
     """Ctrl+F7 writes the prepared values (the program may overwrite them: a write is once); a value typed
     in the watch list is written in place."""
     open_main_online(page, server)
-    element(page, "start").locator(".ld-hit").dblclick()
+    double_click_online(element(page, "start"))
     element(page, "start").locator(".ld-prepared").filter(has_text="<TRUE>").wait_for()
     page.keyboard.press("Control+F7")
     page.wait_for_function("() => document.querySelector('g.ld-coil[data-id=motor]')?.classList.contains('ld-on')")
@@ -152,7 +152,7 @@ def test_values_on_every_pin_and_the_instance_tree(page, server):
     """A TON box shows IN, PT, Q and ET, ET although nothing is wired to it, TIMEs as IEC literals; "Add to
     watch list" on the box gives a tree of readable members; the Variables view lists Main's instance."""
     open_main_online(page, server)
-    element(page, "start").locator(".ld-hit").dblclick()
+    double_click_online(element(page, "start"))
     element(page, "start").locator(".ld-prepared").filter(has_text="<TRUE>").wait_for()
     page.keyboard.press("Control+F7")
     pin_value(page, "ton", "in:IN").filter(has_text="TRUE").wait_for()

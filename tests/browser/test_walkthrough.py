@@ -16,7 +16,7 @@ import pytest
 from playwright.sync_api import expect
 
 from .conftest import ARTIFACTS
-from .steps import new_pou, new_project, panel_tab, watch
+from .steps import double_click_online, new_pou, new_project, panel_tab, watch
 
 pytestmark = pytest.mark.browser
 
@@ -63,7 +63,7 @@ def test_a_first_session_at_1024x768(page, server: str) -> None:
     state.filter(has_text="Online · stopped").wait_for()
     bar.get_by_role("button", name="Run", exact=True).click()
     state.filter(has_text="Online · running").wait_for()
-    ld_element(page, "start").locator(".ld-hit").dblclick()
+    double_click_online(ld_element(page, "start"))
     page.locator(".ld-prepared").filter(has_text="<TRUE>").first.wait_for()
     page.keyboard.press("F7")
     expect(page.get_by_role("status", name="Active forces")).to_have_text("1 forced")
