@@ -91,6 +91,31 @@ def test_an_array_of_structs_sizeof_and_pointer_arithmetic_by_the_struct_size():
     assert sim.read("Main.pr") == "ADR(arr[1]) + 36"  # one past the end
 
 
+MEMCPY = """FUNCTION MEMCPY : BOOL
+VAR_INPUT dst, src : POINTER TO ARRAY [0..32000] OF BYTE; size : UINT; END_VAR
+VAR k : UINT; END_VAR
+FOR k := 0 TO size - 1 DO
+  dst^[k] := src^[k];
+END_FOR;
+MEMCPY := TRUE;
+END_FUNCTION
+"""
+
+
+def test_an_oscat_style_byte_copy_between_structures_scan_by_scan():
+    """OSCAT's buffer functions take ``ADR(x), SIZEOF(x)``: copying SIZEOF(R) = 12 bytes from one R to another
+    copies every member (the padding bytes read 0 and write 0); each scan first adds 16#01010101 to src.b."""
+    sim = simulation(
+        R + MEMCPY,
+        "src : R := (a := 200, b := -2, c := 16#8001); dst : R; ok : BOOL;",
+        "src.b := src.b + 16#01010101;\nok := MEMCPY(ADR(dst), ADR(src), SIZEOF(src));",
+    )
+    for scan in range(1, 4):
+        sim.cycle(1)
+        assert sim.fault is None
+        assert sim.read("Main.dst") == {"A": 200, "B": -2 + 0x01010101 * scan, "C": 0x8001}
+
+
 def test_a_write_into_padding_is_a_located_fault_in_the_scan_it_happens():
     """Writing 0 into R's padding byte 2 changes nothing; writing 7 there (on the third scan) is the fault: R's
     padding cannot hold it. The DWORD at 0..3 covers a and padding 1..3, so a nonzero upper byte faults too."""
