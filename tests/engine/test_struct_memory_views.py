@@ -53,16 +53,20 @@ def test_members_read_and_written_through_byte_word_and_dword_pointers_scan_by_s
 def test_a_nested_struct_and_a_string_member_seen_as_an_array_of_bytes():
     """Inner: x BYTE at 0, padding 1, y WORD at 2..3: 4 bytes, alignment 2. Outer: f BOOL at 0, padding 1, i Inner
     at 2..5 (its padding at 3), s STRING[2] at 6..8 (alignment 1; 'A', NUL, NUL), padding 9..11, d DWORD at 12..15:
-    16 bytes, alignment 4. A write through the array view changes the member whose byte it is."""
+    16 bytes, alignment 4. A write through the array view changes the member whose byte it is. ``ADR(o.i) + 2``
+    and ``ADR(o) + 12`` as a POINTER TO BYTE are bytes 2 of i (y's low byte) and 12 of o (d's low byte)."""
     sim = simulation(
         "TYPE Inner : STRUCT x : BYTE; y : WORD; END_STRUCT; END_TYPE\n"
         "TYPE Outer : STRUCT f : BOOL; i : Inner; s : STRING[2]; d : DWORD; END_STRUCT; END_TYPE\n",
         "o : Outer := (f := TRUE, i := (x := 16#AB, y := 16#1234), s := 'A', d := 16#DEADBEEF);"
-        "pa : POINTER TO ARRAY [0..15] OF BYTE; bytes : ARRAY [0..15] OF BYTE; n, m : DINT;",
-        "n := SIZEOF(o);\nm := SIZEOF(o.i);\npa := ADR(o);\nbytes := pa^;\npa^[7] := 66;\npa^[4] := 16#78;",
+        "pa : POINTER TO ARRAY [0..15] OF BYTE; bytes : ARRAY [0..15] OF BYTE; n, m : DINT; pb : POINTER TO BYTE;"
+        "ylow, dlow : BYTE;",
+        "n := SIZEOF(o);\nm := SIZEOF(o.i);\npa := ADR(o);\nbytes := pa^;\npa^[7] := 66;\npa^[4] := 16#78;\n"
+        "pb := ADR(o.i) + 2;\nylow := pb^;\npb := ADR(o) + 12;\ndlow := pb^;",
     )
     sim.cycle(1)
     assert sim.fault is None and (sim.read("Main.n"), sim.read("Main.m")) == (16, 4)
+    assert (sim.read("Main.ylow"), sim.read("Main.dlow"), sim.read("Main.pb")) == (0x78, 0xEF, "ADR(o) + 12")
     assert sim.read("Main.bytes") == [1, 0, 0xAB, 0, 0x34, 0x12, 65, 0, 0, 0, 0, 0, 0xEF, 0xBE, 0xAD, 0xDE]
     assert sim.read("Main.o") == {"F": True, "I": {"X": 0xAB, "Y": 0x1278}, "S": "AB", "D": 0xDEADBEEF}
 

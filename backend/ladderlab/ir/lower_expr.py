@@ -160,6 +160,10 @@ def _reference_to(expr: Expr, target: Reference, node: ast.Expr) -> Expr:
         raise LoweringError(f"a {_reference_text(target)} cannot refer to {_referred_text(expr.type)}", node)
     if _same_target(expr.type.target, target.target):
         return expr
+    if isinstance(expr, Binary) and isinstance(seen_layout(expr.type.target), str):
+        # ``ADR(rec) + 2`` as a POINTER TO BYTE: the same address as ADR(rec) seen as bytes, moved by 2 (CODESYS
+        # moves by bytes whatever the pointer's type); a pointer to the STRUCT itself moves by whole STRUCTs only
+        return Binary(expr.op, _reference_to(expr.left, target, node), expr.right, target)  # type: ignore[arg-type]  # a pointer move
     whole, seen = byte_layout(expr.type.target), seen_layout(target.target)
     for problem in (whole, seen):
         if isinstance(problem, str):
