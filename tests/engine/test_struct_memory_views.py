@@ -72,7 +72,8 @@ def test_a_nested_struct_and_a_string_member_seen_as_an_array_of_bytes():
 
 
 def test_an_array_of_structs_sizeof_and_pointer_arithmetic_by_the_struct_size():
-    """ARRAY [1..3] OF R: 3 * 12 = 36 bytes; element k starts at 12 * (k - 1). A POINTER TO R moved by SIZEOF(R)
+    """TYP-43/TYP-45: ARRAY [1..3] OF R: 3 * 12 = 36 bytes; element k starts at 12 * (k - 1). A POINTER TO R moved
+    by SIZEOF(R)
     reaches the next element (its b summed); a POINTER TO DINT at byte 12 + 4 = 16 is arr[2].b; the BYTE at 24 + 8
     is arr[3].c's low byte; byte 35 is arr[3]'s last padding byte and reads 0."""
     sim = simulation(
@@ -230,6 +231,9 @@ def _padding(fmt: str) -> set[int]:
     st.lists(st.tuples(st.integers(0, 23), st.integers(0, 255)), min_size=1, max_size=6),
 )
 def test_random_byte_writes_read_back_as_the_reference_layout_says(types, writes):
+    """Bytes written one by one through a POINTER TO BYTE into a STRUCT of random 1-, 2- and 4-byte members: the
+    members, SIZEOF (TYP-45) and every byte read back are what Python's ``struct`` gives for the same bytes with
+    the padding written out (``_reference_format``); a nonzero byte into padding is the fault instead."""
     fmt = _reference_format(types)
     size = struct.calcsize(fmt)
     writes = [(offset % size, byte) for offset, byte in writes]
