@@ -2,7 +2,7 @@
 a REAL reads and writes its IEEE-754 bits, a POINTER TO BYTE walks the bytes of a DWORD, an array or a STRING,
 little-endian as CODESYS on x86/ARM, with CODESYS's layout (BOOL 1 byte, STRING[n] n + 1 bytes). Writes change the
 target exactly; leaving the variable, or a write the variable cannot hold (a character after a STRING's terminator,
-a BOOL byte of 2), is a located fault; a STRUCT cannot be seen as bytes (IR-UNSUPPORTED). Expected values come from
+a BOOL byte of 2), is a located fault; a STRUCT's bytes: test_struct_memory_views.py. Expected values come from
 IEEE-754 (REAL 1.0 = 16#3F800000, -2.5 = 16#C0200000, LREAL 1.0 = 16#3FF0000000000000) and from the byte order.
 """
 
@@ -13,9 +13,6 @@ import struct
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
-
-from ladderlab.simulation.build import build_project
-from ladderlab.st.project_text import source_to_project
 
 from .test_references import simulation
 
@@ -110,18 +107,6 @@ def test_leaving_the_variable_or_writing_what_it_cannot_hold_is_a_located_fault(
     fault = sim.fault
     assert fault is not None and (fault.code, fault.message) == ("index_out_of_range", message)
     assert (fault.pou, fault.origin.line) == ("MAIN", 5 + line)  # TYPES, PROGRAM, VAR, declarations, END_VAR
-
-
-def test_a_structure_cannot_be_seen_as_bytes():
-    text = (
-        "TYPE P : STRUCT a : BYTE; b : DINT; END_STRUCT; END_TYPE\n"
-        "PROGRAM Main\nVAR s : P; pb : POINTER TO BYTE; END_VAR\npb := ADR(s);\nEND_PROGRAM\n"
-    )
-    project, _ = source_to_project(text, "views")
-    assert [d.format() for d in build_project(project).diagnostics if d.severity == "error"] == [
-        "Main/body:4:7, POU Main: error IR-UNSUPPORTED: a REF_TO BYTE cannot see a P as bytes: the STRUCT P (CODESYS "
-        "aligns its members to their size, which LadderLab does not lay out)"
-    ]
 
 
 @settings(max_examples=30, deadline=None)

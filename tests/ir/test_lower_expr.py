@@ -290,14 +290,21 @@ def test_unsupported_expressions_are_located_errors():
 
 
 def test_sizeof_is_a_constant_in_bytes():
-    """TYP-45 as CODESYS counts (ironplc end_to_end_sizeof): widths, STRING[n] n + 1, arrays and structures summed."""
+    """TYP-45 as CODESYS counts (ironplc end_to_end_sizeof): widths, STRING[n] n + 1, arrays summed, a STRUCT with
+    its padding (ir/byte_layout.py: TPair's a INT at 0..1, padding 2..3, c DINT at 4..7); a STRUCT CODESYS lays out
+    differently on different targets (an enumeration member: its base type) has no SIZEOF."""
     assert value("SIZEOF(i)", "d") == const(2, DINT)
     assert value("SIZEOF(arr)", "d") == const(6, DINT)
     assert value("SIZEOF(LREAL)", "d") == const(8, DINT)
     assert value("SIZEOF(s) + SIZEOF(b)", "d") == ir.Binary("ADD", const(11, DINT), const(1, DINT), DINT)
     assert value(
-        "SIZEOF(TPair)", "d", extra=TYPES + "\nTYPE TPair : STRUCT a : INT; c : TColor; END_STRUCT; END_TYPE"
-    ) == const(6, DINT)
+        "SIZEOF(TPair)", "d", extra=TYPES + "\nTYPE TPair : STRUCT a : INT; c : DINT; END_STRUCT; END_TYPE"
+    ) == const(8, DINT)
+    refused = "PROGRAM P\nVAR d : DINT; END_VAR\nd := SIZEOF(TPair);\nEND_PROGRAM\n" + TYPES
+    assert errors(refused + "\nTYPE TPair : STRUCT a : INT; c : TColor; END_STRUCT; END_TYPE") == [
+        "P/body:3:6, POU P: error IR-UNSUPPORTED: SIZEOF is refused for the STRUCT TPAIR, whose member C is the "
+        "enumeration TCOLOR (CODESYS stores it as its base type, INT unless it names another)"
+    ]
 
 
 def test_operand_of_a_diagram_lowers_through_check_operand():

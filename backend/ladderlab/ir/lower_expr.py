@@ -36,7 +36,7 @@ from ..st.methods import is_self, is_super
 from ..st.printer import print_expression
 from ..st.rules import EnumValue
 from ..st.symbols import PouInfo, PropertyRef, Symbol
-from .byte_layout import byte_layout
+from .byte_layout import byte_layout, seen_layout
 from .codesys_dates import in_seconds
 from .context import PouContext
 from .lower_types import LoweringError, byte_size, engine_value, ir_default
@@ -160,7 +160,11 @@ def _reference_to(expr: Expr, target: Reference, node: ast.Expr) -> Expr:
         raise LoweringError(f"a {_reference_text(target)} cannot refer to {_referred_text(expr.type)}", node)
     if _same_target(expr.type.target, target.target):
         return expr
-    whole, seen = byte_layout(expr.type.target), byte_layout(target.target)
+    if isinstance(expr, Binary) and isinstance(seen_layout(expr.type.target), str):
+        # ``ADR(rec) + 2`` as a POINTER TO BYTE: the same address as ADR(rec) seen as bytes, moved by 2 (CODESYS
+        # moves by bytes whatever the pointer's type); a pointer to the STRUCT itself moves by whole STRUCTs only
+        return Binary(expr.op, _reference_to(expr.left, target, node), expr.right, target)  # type: ignore[arg-type]  # a pointer move
+    whole, seen = byte_layout(expr.type.target), seen_layout(target.target)
     for problem in (whole, seen):
         if isinstance(problem, str):
             raise LoweringError(
@@ -365,7 +369,7 @@ def _pointer_index(node: ast.Index, ctx: PouContext) -> Var:
             "first",
             node,
         )
-    pointer = lower_expr(node.base, ctx)
+    pointer = _sized(lower_expr(node.base, ctx))
     reference = pointer.type
     if not isinstance(reference, Reference):
         raise LoweringError(None)
@@ -480,12 +484,24 @@ def _short_circuit(node: ast.Binary, op: str, ctx: PouContext) -> Expr:
 _UNSIGNED = {8: "USINT", 16: "UINT", 32: "UDINT", 64: "ULINT"}
 
 
+def _sized(pointer: Expr) -> Expr:
+    """``pointer``, once what it points to has a size: the engine moves and orders pointers by it, so a target
+    without one (a STRUCT CODESYS lays out differently on different targets, an FB instance) is refused here."""
+    try:
+        byte_size(pointer.type.target)  # type: ignore[union-attr]  # a pointer (the checker)
+    except LoweringError as error:
+        raise LoweringError(
+            f"moving or ordering pointers needs the size of what they point to: {error.message}"
+        ) from None
+    return pointer
+
+
 def _reference_operation(node: ast.Binary, op: str, ctx: PouContext) -> Expr:
     """``r1 = r2``, ``r <> NULL``: whether two references refer to one variable. ``p + n`` / ``p - n`` (bytes,
     CODESYS): the pointer moved along the array it points into (the engine checks it stays there). ``p < q`` ...
     order two pointers into one variable by the byte they point to (the engine faults on different variables)."""
     if op in ("ADD", "SUB") and isinstance(node.left.ty, t.PointerType) and t.moves_a_pointer(node.right.ty):
-        pointer = lower_expr(node.left, ctx)
+        pointer = _sized(lower_expr(node.left, ctx))
         offset = lower_expr(node.right, ctx, Elementary("DINT"))
         if isinstance(offset.type, Elementary) and offset.type.info.category == "bits":  # the number it holds
             offset = convert(offset, Elementary(_UNSIGNED[offset.type.info.bits]))
@@ -495,7 +511,8 @@ def _reference_operation(node: ast.Binary, op: str, ctx: PouContext) -> Expr:
     if op not in ("EQ", "NE"):
         if not (isinstance(node.left.ty, t.PointerType) and isinstance(node.right.ty, t.PointerType)):
             raise LoweringError(f"'{node.op}' orders two pointers, not a pointer and a number", node)
-        return Binary(op, lower_expr(node.left, ctx), lower_expr(node.right, ctx), BOOL)  # type: ignore[arg-type]  # LT..GE
+        left, right = _sized(lower_expr(node.left, ctx)), _sized(lower_expr(node.right, ctx))
+        return Binary(op, left, right, BOOL)  # type: ignore[arg-type]  # LT..GE
     left, right = lower_expr(node.left, ctx), lower_expr(node.right, ctx)
     if isinstance(left, Const) and left.value in (None, 0):  # NULL (an interface's 0) takes the other's type
         left = Const(None, right.type)

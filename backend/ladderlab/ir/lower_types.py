@@ -30,6 +30,7 @@ from ..st.body import BodyChecker
 from ..st.printer import print_expression
 from ..st.rules import EnumValue, constant_value
 from ..st.symbols import CheckResult, PouInfo, Symbol, TypeDef
+from .byte_layout import byte_layout
 from .nodes import ReferenceInit, Slot
 from .types import (
     Array,
@@ -379,8 +380,8 @@ def ir_default(type: IrType) -> object:
 
 def byte_size(type: IrType) -> int:
     """SIZEOF (TYP-45) as CODESYS counts: the type's width, BOOL 1, STRING[n] n + 1, enumerations 4 (stored as
-    DINT), a pointer 4 (an address of the 32-bit x86/ARM target LadderLab computes as, docs/st.md), arrays and
-    structures the sum of their elements (no padding)."""
+    DINT), a pointer 4 (an address of the 32-bit x86/ARM target LadderLab computes as, docs/st.md), arrays the sum
+    of their elements, a STRUCT its byte layout's size (padding included: ir/byte_layout.py)."""
     if isinstance(type, Subrange):
         return byte_size(type.base)
     if isinstance(type, Elementary):
@@ -392,7 +393,10 @@ def byte_size(type: IrType) -> int:
     if isinstance(type, Array):
         return _size(type) * byte_size(type.element)
     if isinstance(type, Struct):
-        return sum(byte_size(f.type) for f in type.fields)
+        spec = byte_layout(type)
+        if isinstance(spec, str):
+            raise LoweringError(f"SIZEOF is refused for {spec}")
+        return spec[2]
     if isinstance(type, Reference):
         return POINTER_BYTES
     raise LoweringError(

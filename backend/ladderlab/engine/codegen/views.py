@@ -3,10 +3,10 @@
 LadderLab keeps values as Python objects, not bytes; a view reads and writes the bytes a CODESYS PLC on x86/ARM
 would hold, little-endian, computed from the value on each access: ``Layout.read`` encodes only the part of the
 variable the access covers, ``Layout.write`` splices new bytes in and decodes the variable again. A write whose
-bytes the variable cannot hold exactly (a BOOL byte of 2, a character after a STRING's terminator) is a fault, so
-no value changes other than the bytes written. The layouts come from the lowering as specs
-(ir/byte_layout.py): ``("int", size, signed)``, ``("real", size)``, ``("bool",)``, ``("string", n)``,
-``("array", count, element spec)``.
+bytes the variable cannot hold exactly (a BOOL byte of 2, a character after a STRING's terminator, a STRUCT's
+padding byte other than 0) is a fault, so no value changes other than the bytes written. The layouts come from
+the lowering as specs (ir/byte_layout.py): ``("int", size, signed)``, ``("real", size)``, ``("bool",)``,
+``("string", n)``, ``("array", count, element spec)``, ``("struct", name, size, alignment, members)``.
 """
 
 from __future__ import annotations
@@ -16,6 +16,7 @@ import struct
 from typing import Any
 
 from ..errors import INDEX_RANGE, PlcRuntimeError, null_dereference, pointer_outside_bytes
+from . import names
 from .runtime import Ref, dangling
 
 _INT_FORMATS = {(1, False): "<B", (1, True): "<b", (2, False): "<H", (2, True): "<h"}
@@ -107,6 +108,45 @@ class ArrayLayout:
         return value
 
 
+class StructLayout:
+    """A STRUCT (a generated ``Structure``): its members' bytes at their offsets, padding bytes between and after
+    them. Padding holds nothing, so it reads 0 and a write of anything else there is a fault (as after a STRING's
+    terminator). Only the members an access covers are encoded; a write changes them on the structure itself."""
+
+    def __init__(self, name: str, size: int, members: tuple) -> None:
+        self.name, self.size = name, size
+        self.members = tuple((names.slot(member), offset, layout(spec)) for member, offset, spec in members)
+        used = {offset + i for _, offset, member in self.members for i in range(member.size)}
+        self.padding = frozenset(range(size)) - used
+
+    def _covered(self, offset: int, end: int):
+        """``(attribute, member offset, layout, first, last)`` of each member bytes ``offset..end - 1`` reach."""
+        for attribute, start, member in self.members:
+            low, high = max(offset, start), min(end, start + member.size)
+            if low < high:
+                yield attribute, start, member, low, high
+
+    def read(self, value: Any, offset: int, size: int) -> bytes:
+        data = bytearray(size)
+        for attribute, start, member, low, high in self._covered(offset, offset + size):
+            data[low - offset : high - offset] = member.read(getattr(value, attribute), low - start, high - low)
+        return bytes(data)
+
+    def write(self, value: Any, offset: int, data: bytes) -> Any:
+        end = offset + len(data)
+        padding = sorted(i for i in self.padding if offset <= i < end and data[i - offset])
+        if padding:
+            raise _not_kept(
+                f"the byte {data[padding[0] - offset]:02x} in padding byte {padding[0]} of the STRUCT {self.name}"
+            )
+        for attribute, start, member, low, high in self._covered(offset, end):
+            old = getattr(value, attribute)
+            new = member.write(old, low - start, data[low - offset : high - offset])
+            if new is not old:
+                setattr(value, attribute, new)
+        return value
+
+
 @functools.cache
 def layout(spec: tuple) -> Any:
     """The runtime layout of a spec from the lowering (ir/byte_layout.py)."""
@@ -119,6 +159,8 @@ def layout(spec: tuple) -> Any:
         return Scalar("<B", 1, "bool")
     if kind == "string":
         return String(spec[1])
+    if kind == "struct":
+        return StructLayout(spec[1], spec[2], spec[4])
     return ArrayLayout(spec[1], layout(spec[2]))
 
 
