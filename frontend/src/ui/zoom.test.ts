@@ -14,6 +14,7 @@ describe("fit zoom", () => {
 
   it("rounds down to whole percent, so the diagram never overflows by rounding", () => {
     expect(fitZoom({ width: 300, height: 100 }, { width: 200, height: 600 })).toBe(0.66);
+    expect(fitZoom({ width: 25, height: 20 }, { width: 28, height: 23 })).toBe(1.12); // 25 * 1.12 = 28.000000000000004 in floats
   });
 
   it("stays within the zoom range, and at 100 % for nothing to fit", () => {
@@ -31,9 +32,10 @@ describe("fit zoom", () => {
         const zoom = fitZoom({ width: cw, height: ch }, { width: vw, height: vh });
         const exact = Math.min(vw / cw, vh / ch);
         if (exact < FIT_MIN || exact > ZOOM_MAX) return; // clamped, checked above
-        expect(cw * zoom).toBeLessThanOrEqual(vw);
-        expect(ch * zoom).toBeLessThanOrEqual(vh);
-        // (less a float's error: 0.67 computed as 0.66999... fits a hair's breadth under)
+        // (up to a float's error both ways: 25 * 1.12 is 28.000000000000004, and 0.67 computed as 0.66999...
+        // fits a hair's breadth under; a millionth of a pixel is no overflow)
+        expect(cw * zoom).toBeLessThanOrEqual(vw + 1e-6);
+        expect(ch * zoom).toBeLessThanOrEqual(vh + 1e-6);
         expect(cw * (zoom + 0.01) > vw - 1e-6 || ch * (zoom + 0.01) > vh - 1e-6).toBe(true);
       }),
     );
