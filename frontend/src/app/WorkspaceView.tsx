@@ -802,7 +802,7 @@ export function WorkspaceView() {
 
         {help ? <ShortcutHelp scopes={["app", "ld", "fbd", "st"]} onClose={() => setHelp(false)} /> : null}
         <ImportPlcopen
-          onStored={() => void appStore.getState().loadProjects()}
+          onStored={() => appStore.getState().loadProjects()}
           onOpen={(imported) => appStore.getState().selectProject(imported)}
         />
       </div>

@@ -9,8 +9,9 @@ import { failure } from "./outcome";
 import { Problems, type Outcome } from "./Problems";
 
 export interface ImportPlcopenProps {
-  /** The new project is stored (refresh the project list). */
-  onStored(name: string): void;
+  /** The new project is stored: refresh the project list. "Open" is offered only once this settles, since the
+   * app can open only a project its list holds (a click before the list caught up would do nothing). */
+  onStored(name: string): void | Promise<void>;
   /** The user asks to open the new project. */
   onOpen(name: string): void;
   api?: InterchangeApi;
@@ -54,8 +55,8 @@ export function ImportPlcopen({ onStored, onOpen, api = interchangeApi }: Import
     try {
       const report = await api.importPlcopen(await readText(file), name);
       setOutcome({ message: importSummary(report), diagnostics: report.diagnostics ?? [], failed: false });
+      await onStored(report.project.name);
       setImported(report.project.name);
-      onStored(report.project.name);
     } catch (err) {
       setOutcome(failure("The import", err));
     } finally {

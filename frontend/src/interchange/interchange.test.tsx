@@ -110,6 +110,30 @@ describe("ImportPlcopen (issue 9: import a PLCopen XML file into a new project)"
     expect(onOpen).toHaveBeenCalledWith("steps");
   });
 
+  it("offers Open only once the project list is refreshed (a click before it would open nothing)", async () => {
+    let refreshed = () => {};
+    const onStored = vi.fn(() => new Promise<void>((resolve) => (refreshed = resolve)));
+    render(
+      <ImportPlcopen
+        api={fakeApi({
+          importPlcopen: vi.fn(async () => ({
+            project: { name: "steps", revision: "r1", modified: "m", pou_count: 1 },
+            diagnostics: [],
+          })),
+        })}
+        onStored={onStored}
+        onOpen={vi.fn()}
+      />,
+    );
+    pick("<project>x</project>");
+    fireEvent.click(screen.getByRole("button", { name: "Import" }));
+    await screen.findByRole("status");
+    await waitFor(() => expect(onStored).toHaveBeenCalledWith("steps"));
+    expect(screen.queryByRole("button", { name: "Open steps" })).toBeNull();
+    refreshed();
+    await screen.findByRole("button", { name: "Open steps" });
+  });
+
   it("shows why a document was refused and stores nothing", async () => {
     const onStored = vi.fn();
     render(
