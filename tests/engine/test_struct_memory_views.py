@@ -151,6 +151,14 @@ def test_a_write_into_padding_is_a_located_fault_in_the_scan_it_happens():
     )
 
 
+# L without a pack_mode: a BYTE at 0, then x LREAL at 4 on a target whose default pack mode is 4, at 8 where it is 8.
+L_MOVES = (
+    "the STRUCT L, whose member X lies at byte 4 or 8 depending on the target (without a pack_mode CODESYS aligns "
+    "8-byte members to 4 or 8 bytes by target): give L the target's pack_mode ({attribute 'pack_mode' := '4'} or '8' "
+    "above its TYPE), or order its members so that each 8-byte one lies at a multiple of 8 and so does the size"
+)
+
+
 @pytest.mark.parametrize(
     ("types", "declarations", "body", "message"),
     [
@@ -158,22 +166,19 @@ def test_a_write_into_padding_is_a_located_fault_in_the_scan_it_happens():
             "TYPE L : STRUCT a : BYTE; x : LREAL; END_STRUCT; END_TYPE\n",
             "s : L; pb : POINTER TO BYTE;",
             "pb := ADR(s);",
-            "a REF_TO BYTE cannot see a L as bytes: the STRUCT L, whose member X is a LREAL (CODESYS aligns 8-byte "
-            "members to 4 or 8 bytes depending on the target)",
+            "a REF_TO BYTE cannot see a L as bytes: " + L_MOVES,
         ),
         (
             "TYPE L : STRUCT a : BYTE; x : LREAL; END_STRUCT; END_TYPE\n",
             "s : L; n : DINT;",
             "n := SIZEOF(s);",
-            "SIZEOF is refused for the STRUCT L, whose member X is a LREAL (CODESYS aligns 8-byte members to 4 or 8 "
-            "bytes depending on the target)",
+            "SIZEOF is refused for " + L_MOVES,
         ),
         (
             "TYPE L : STRUCT a : BYTE; x : LREAL; END_STRUCT; END_TYPE\n",
             "s : ARRAY [1..2] OF L; p : POINTER TO L;",
             "p := ADR(s[1]);\np := p + 16;",
-            "moving or ordering pointers needs the size of what they point to: SIZEOF is refused for the STRUCT L, "
-            "whose member X is a LREAL (CODESYS aligns 8-byte members to 4 or 8 bytes depending on the target)",
+            "moving or ordering pointers needs the size of what they point to: SIZEOF is refused for " + L_MOVES,
         ),
         (
             "TYPE T : STRUCT a : BYTE; t : TIME; END_STRUCT; END_TYPE\nTYPE O : STRUCT i : T; END_STRUCT; END_TYPE\n",
@@ -192,7 +197,7 @@ def test_a_write_into_padding_is_a_located_fault_in_the_scan_it_happens():
     ],
 )
 def test_what_stays_refused_is_a_located_error(types, declarations, body, message):
-    """A STRUCT whose layout CODESYS chooses by target (an 8-byte member: 4- or 8-byte aligned), or with a member
+    """A STRUCT whose layout CODESYS chooses by target (an 8-byte member at 4 or 8, no pack_mode), or with a member
     that has no byte layout (a TIME), is neither seen as bytes, nor sized, nor walked by pointer arithmetic; other
     bytes are never seen as a STRUCT."""
     result = build(f"{types}PROGRAM Main\nVAR\n{declarations}\nEND_VAR\n{body}\nEND_PROGRAM\n")

@@ -5,13 +5,17 @@ from the value (engine/codegen/views.py); the specs here are what it is given.
 A spec is ``("int", size, signed)`` for the integers and bit strings, ``("real", size)``, ``("bool",)`` (one byte),
 ``("string", n)`` (STRING[n]: n + 1 bytes, a NUL after the text), ``("array", count, element spec)`` (the elements
 one after another; a multi-dimensional array is an array of arrays, the first dimension outermost) or
-``("struct", name, size, alignment, ((member, offset, spec), ...))`` (a STRUCT: its members in declaration order
-at CODESYS's natural alignment, padding bytes between and after them).
+``("struct", name, size, pack_mode, ((member, offset, spec), ...))`` (a STRUCT: its members in declaration order
+at CODESYS's alignment, padding bytes between and after them; pack_mode as declared, None without one).
+
+CODESYS aligns each member of a STRUCT to its natural alignment (a number's size) capped by the STRUCT's pack_mode
+(https://content.helpme-codesys.com/en/CODESYS%20Development%20System/_cds_pragma_attribute_pack_mode.html). A
+STRUCT without the attribute has the target's default pack mode, 4 on some targets and 8 on others: it matters only
+to 8-byte members, so such a layout is worked out both ways and kept only when both agree.
 """
 
 from __future__ import annotations
 
-from ..iec.values import article
 from .types import Array, Elementary, Enum, IrType, Reference, Struct, Subrange, describe
 
 Spec = tuple
@@ -19,8 +23,21 @@ Spec = tuple
 
 def byte_layout(ty: IrType) -> Spec | str:
     """The spec of ``ty``, or why LadderLab cannot lay it out exactly as CODESYS does."""
+    narrow, wide = _layout(ty, 4), _layout(ty, 8)
+    if narrow == wide or isinstance(narrow, str) or isinstance(wide, str):
+        return narrow
+    name, what = _moved(narrow, wide)
+    return (
+        f"the STRUCT {name}, {what} depending on the target (without a pack_mode CODESYS aligns 8-byte members to 4 "
+        f"or 8 bytes by target): give {name} the target's pack_mode ({{attribute 'pack_mode' := '4'}} or '8' above "
+        "its TYPE), or order its members so that each 8-byte one lies at a multiple of 8 and so does the size"
+    )
+
+
+def _layout(ty: IrType, default: int) -> Spec | str:
+    """The spec of ``ty`` on a target whose STRUCTs without a pack_mode have the pack mode ``default``."""
     if isinstance(ty, Subrange):
-        return byte_layout(ty.base)
+        return _layout(ty.base, default)
     if isinstance(ty, Elementary):
         info = ty.info
         if info.category in ("int", "bits"):
@@ -33,14 +50,14 @@ def byte_layout(ty: IrType) -> Spec | str:
             return ("string", ty.max_length)
         return f"a {describe(ty)} (its bytes in CODESYS are not the value LadderLab keeps)"
     if isinstance(ty, Array):
-        spec = byte_layout(ty.element)
+        spec = _layout(ty.element, default)
         if isinstance(spec, str):
             return spec
         for lo, hi in reversed(ty.dims):
             spec = ("array", hi - lo + 1, spec)
         return spec
     if isinstance(ty, Struct):
-        return _struct_layout(ty)
+        return _struct_layout(ty, default)
     if isinstance(ty, Enum):
         return f"the enumeration {ty.name} (CODESYS stores it as its base type, INT unless it names another)"
     if isinstance(ty, Reference):
@@ -59,36 +76,52 @@ def seen_layout(ty: IrType) -> Spec | str:
     return spec
 
 
-def _struct_layout(ty: Struct) -> Spec | str:
-    """CODESYS's natural layout: each member at the next multiple of its alignment, the size a multiple of the
-    largest one. It is the same on every x86/ARM target, 32- or 64-bit, unless a member is 8 bytes wide."""
+def _struct_layout(ty: Struct, default: int) -> Spec | str:
+    """Each member at the next multiple of its alignment (capped by the pack mode), the size a multiple of the
+    largest one: CODESYS's layout, and C's."""
     members, end, largest = [], 0, 1
+    pack = ty.pack_mode or default
     for field in ty.fields:
-        spec = byte_layout(field.type)
+        spec = _layout(field.type, default)
         if isinstance(spec, str):
             return f"the STRUCT {ty.name}, whose member {field.name} is {spec}"
-        align = _alignment(spec)
-        if align == 8:
-            return (
-                f"the STRUCT {ty.name}, whose member {field.name} is {article(describe(field.type))} (CODESYS aligns "
-                "8-byte members to 4 or 8 bytes depending on the target)"
-            )
+        align = min(_alignment(spec, default), pack)
         end += -end % align
         members.append((field.name, end, spec))
         end += _spec_size(spec)
         largest = max(largest, align)
-    return ("struct", ty.name, end + -end % largest, largest, tuple(members))
+    return ("struct", ty.name, end + -end % largest, ty.pack_mode, tuple(members))
 
 
-def _alignment(spec: Spec) -> int:
+def _alignment(spec: Spec, default: int) -> int:
     """The alignment of a member (a STRUCT member lies at a multiple of it): a number's size, 1 for BOOL and
-    STRING, an array's element's, a STRUCT's largest member's."""
+    STRING, an array's element's, a STRUCT's largest member's capped by its pack mode."""
     kind = spec[0]
     if kind in ("int", "real"):
         return spec[1]
     if kind == "array":
-        return _alignment(spec[2])
-    return spec[3] if kind == "struct" else 1
+        return _alignment(spec[2], default)
+    if kind == "struct":
+        largest = max((_alignment(member, default) for _, _, member in spec[4]), default=1)
+        return min(largest, spec[3] or default)
+    return 1
+
+
+def _moved(narrow: Spec, wide: Spec) -> tuple[str, str]:
+    """The STRUCT of a layout that differs between the default pack modes 4 and 8, and how: a member that moves
+    (in a STRUCT with a pack_mode, only because the member is a STRUCT without one), or its size."""
+    if narrow[0] == "array":
+        return _moved(narrow[2], wide[2])
+    for (name, at4, spec4), (_, at8, spec8) in zip(narrow[4], wide[4], strict=True):
+        if at4 != at8 and narrow[3] is not None:
+            while spec4[0] == "array":
+                spec4 = spec4[2]
+            return spec4[1], "aligned to 4 or 8 bytes"
+        if at4 != at8:
+            return narrow[1], f"whose member {name} lies at byte {at4} or {at8}"
+        if spec4 != spec8:
+            return _moved(spec4, spec8)
+    return narrow[1], f"{narrow[2]} or {wide[2]} bytes"
 
 
 def _spec_size(spec: Spec) -> int:

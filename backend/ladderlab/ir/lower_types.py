@@ -161,7 +161,7 @@ class TypeLowering:
             except LoweringError as error:
                 raise _in_types_text(error) from None
             fields.append(StructField(upper, self.type_of(field_type, field_spec), initial))
-        lowered = Struct(ty.name.upper(), tuple(fields))
+        lowered = Struct(ty.name.upper(), tuple(fields), ty.pack_mode)
         self._structs[id(ty)] = lowered
         return lowered
 

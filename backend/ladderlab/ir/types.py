@@ -62,6 +62,7 @@ class StructField:
 class Struct:
     name: str
     fields: tuple[StructField, ...]
+    pack_mode: int | None = None  # CODESYS's {attribute 'pack_mode'}: 1, 2, 4 or 8; None: the target's default
 
 
 @dataclass(frozen=True)

@@ -470,6 +470,7 @@ class TypeDecl:
     type: TypeSpec
     init: Init | None = None
     span: Span = _span()
+    pack_mode: str | None = None  # CODESYS's {attribute 'pack_mode' := '...'} above it, as written (st/pragmas.py)
 
 
 @dataclass(slots=True)

@@ -213,6 +213,8 @@ class ProjectChecker:
         self._resolving.add(upper)
         resolved = self.resolve(decl.type, BodyChecker(self.result, None, report), decl.name)
         self._resolving.discard(upper)
+        if decl.pack_mode is not None:
+            _pack(decl, resolved, report)
         init = decl.init
         if init is None and isinstance(decl.type, ast.NamedType):  # THomeTemp : TRoomTemp inherits 20.0 (TYP-11)
             parent = self._typedef(decl.type.name.upper())
@@ -578,6 +580,29 @@ class ProjectChecker:
             elif callee not in state:
                 self._visit_calls(callee, path + [callee], state, reported)
         state[name] = 2
+
+
+_PACK_MODES = {"0": 1, "1": 1, "2": 2, "4": 4, "8": 8}  # CODESYS: 0 and 1 both pack without any padding
+
+
+def _pack(decl: ast.TypeDecl, resolved: Type, report: Reporter) -> None:
+    """Give the STRUCT its CODESYS ``pack_mode`` (st/pragmas.py), the largest alignment of its members."""
+    if not isinstance(decl.type, ast.StructType) or not isinstance(resolved, t.StructType):
+        report(
+            "ST-DECL",
+            f"the attribute 'pack_mode' packs a STRUCT, and the type '{decl.name}' is not one: put it above a "
+            "STRUCT's TYPE declaration, or remove it",
+            decl,
+        )
+    elif decl.pack_mode not in _PACK_MODES:
+        report(
+            "ST-DECL",
+            f"the attribute 'pack_mode' of the STRUCT '{decl.name}' is '{decl.pack_mode}': CODESYS packs with '0' "
+            "or '1' (no padding), '2', '4' or '8' (members aligned to at most that many bytes)",
+            decl,
+        )
+    else:
+        resolved.pack_mode = _PACK_MODES[decl.pack_mode]
 
 
 def _elementary_decl(decl: ast.VarDecl) -> bool:

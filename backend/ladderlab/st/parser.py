@@ -28,6 +28,7 @@ from .errors import describe_unexpected, last_token, literal_problem, would_acce
 from .fast_lalr import NotFast, fast_parse
 from .lark_cache import cached_lark
 from .nesting import too_deep
+from .pragmas import attach_pack_modes
 from .quick_decls import quick_declarations
 from .transformer import AstBuilder, StSyntaxError
 
@@ -163,6 +164,7 @@ def parse_source(text: str, *, file: str | None = None, nested_comments: bool = 
     result = _run(prepared, "start_source", file)
     if result.ast is not None:
         _name_pous(result)
+        attach_pack_modes(result.ast, prepared)
         return _finish(result, text, file)
     items: list[Any] = []
     diagnostics: list[Diagnostic] = []
@@ -174,7 +176,9 @@ def parse_source(text: str, *, file: str | None = None, nested_comments: bool = 
             items += part.ast.items
     if not diagnostics:  # the split hid the problem (e.g. text outside any unit): keep the whole-file report
         diagnostics = result.diagnostics
-    return _finish(ParseResult(ast.Source(items, ast.NO_SPAN), diagnostics), text, file)
+    source = ast.Source(items, ast.NO_SPAN)
+    attach_pack_modes(source, prepared)
+    return _finish(ParseResult(source, diagnostics), text, file)
 
 
 def parse_pou(text: str, *, file: str | None = None, nested_comments: bool = False) -> ParseResult:

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from ..iec.literals import encode_string, encode_time_literal
 from . import ast
+from .pragmas import pack_mode_pragma
 
 INDENT = "    "
 
@@ -267,6 +268,8 @@ def _typeprint_statements(block: ast.TypeBlock) -> str:
     lines = []
     for decl in block.decls:
         init = f" := {print_initializer(decl.init)}" if decl.init is not None else ""
+        if decl.pack_mode is not None:  # above the declaration it packs (st/pragmas.py)
+            lines.append(f"{INDENT}{pack_mode_pragma(decl.pack_mode)}\n")
         lines.append(f"{INDENT}{decl.name} : {print_type(decl.type, 1)}{init};\n")
     return "TYPE\n" + "".join(lines) + "END_TYPE\n"
 

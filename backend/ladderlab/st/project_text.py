@@ -26,6 +26,7 @@ from ..model.project import (
 from . import ast
 from .il_parser import blank_il_bodies
 from .parser import parse_source
+from .pragmas import block_text
 from .printer import print_expression
 from .sfc_text import sfc_from_text
 
@@ -76,7 +77,10 @@ def source_to_project(
     diagnostics = list(parsed.diagnostics)
     types, globals_, pous, configurations = [], [], [], []
     for item in parsed.ast.items:
-        if isinstance(item, (ast.TypeBlock, ast.InterfaceDecl)):  # INTERFACEs live in the types text
+        if isinstance(item, ast.TypeBlock):
+            head = source.between(item.span[:2], item.decls[0].span[:2]) if item.decls else ""
+            types.append(block_text(item, source.of(item), head))
+        elif isinstance(item, ast.InterfaceDecl):  # INTERFACEs live in the types text
             types.append(source.of(item))
         elif isinstance(item, ast.VarBlock):
             globals_.append(source.of(item))

@@ -78,6 +78,7 @@ class PointerType(Type):
 class StructType(Type):
     name: str
     fields: dict[str, tuple[str, Type]] = field(default_factory=dict)  # upper name -> (name as written, type)
+    pack_mode: int | None = None  # CODESYS's largest member alignment (1, 2, 4, 8), None: natural (ir/byte_layout.py)
 
 
 @dataclass(eq=False)

@@ -41,6 +41,8 @@ XSD_ELEMENTARY = (
     "TOD",
 )
 _XSD_SPELLING = {"TIME_OF_DAY": "TOD", "DATE_AND_TIME": "DT"}
+#: CODESYS's attribute pragmas of a declaration: ``<data name=...><Attributes><Attribute Name= Value=/>``
+ATTRIBUTES_DATA = "http://www.3s-software.com/plcopenxml/attributes"
 _GENERIC = (
     "ANY",
     "ANY_DERIVED",
@@ -166,6 +168,9 @@ def write_data_type(parent: ET.Element, decl: ast.TypeDecl) -> None:
     write_type(sub(node, "baseType"), decl.type)
     if decl.init is not None:
         write_value(sub(node, "initialValue"), decl.init)
+    if decl.pack_mode is not None:  # CODESYS's attribute pragmas travel in its own addData entry
+        data = sub(sub(node, "addData"), "data", {"name": ATTRIBUTES_DATA, "handleUnknown": "implementation"})
+        sub(sub(data, "Attributes"), "Attribute", {"Name": "pack_mode", "Value": decl.pack_mode})
 
 
 def parse_type_text(text: str) -> ast.TypeSpec | None:
@@ -290,8 +295,17 @@ class VarReader:
         return ast.VarBlock(kind or KIND_BY_LIST[local(var_list)], qualifiers, self.declarations(var_list))
 
     def data_type(self, element: ET.Element) -> ast.TypeDecl:
+        r = self.reader
+        attributes = [
+            attribute
+            for data in r.children(r.child(element, "addData"), "data")
+            if data.get("name") == ATTRIBUTES_DATA
+            for holder in r.children(data, "Attributes")
+            for attribute in r.children(holder, "Attribute")
+        ]
         return ast.TypeDecl(
             element.get("name", ""),
-            self.type(self.reader.child(element, "baseType")),
-            self.value(self.reader.child(element, "initialValue")),
+            self.type(r.child(element, "baseType")),
+            self.value(r.child(element, "initialValue")),
+            pack_mode=next((a.get("Value") for a in attributes if a.get("Name") == "pack_mode"), None),
         )

@@ -1,0 +1,69 @@
+"""CODESYS's ``{attribute 'pack_mode' := 'N'}``, the one pragma that changes what a program computes here.
+
+The lexer skips every pragma (``%ignore PRAGMA``); this pass finds the pack_mode ones in the text and gives each
+to the TYPE declaration it stands above (``TypeDecl.pack_mode``), as CODESYS places it: "Insert location: above
+the declaration of the data structure" (https://content.helpme-codesys.com/en/CODESYS%20Development%20System/
+_cds_pragma_attribute_pack_mode.html). Written before ``TYPE`` or before the name inside a TYPE block, it belongs
+to the declaration that follows (comments and other pragmas may stand between). One that stands above anything
+else (a function block, a variable) stays ignored, as before: LadderLab lays out no FB instance's memory.
+"""
+
+from __future__ import annotations
+
+import re
+from typing import Any
+
+from . import ast
+
+_PACK_MODE = re.compile(r"\{\s*attribute\s+'pack_mode'\s*:=\s*'([^']*)'\s*\}", re.IGNORECASE)
+# What the lexer skips too: strings are jumped over, a pragma is captured (group 1)
+_LEXED = re.compile(r"'(?:[^'$\n]|\$.)*'|\"(?:[^\"$\n]|\$.)*\"|\(\*[\s\S]*?\*\)|/\*[\s\S]*?\*/|//[^\n]*|(\{[^}]*\})")
+_BETWEEN = re.compile(r"(?:\s+|\(\*[\s\S]*?\*\)|/\*[\s\S]*?\*/|//[^\n]*|\{[^}]*\})*")
+_TYPE = re.compile(r"TYPE\b", re.IGNORECASE)
+
+
+def pack_mode_pragma(value: str) -> str:
+    """The pragma as LadderLab writes it."""
+    return f"{{attribute 'pack_mode' := '{value}'}}"
+
+
+def block_text(block: ast.TypeBlock, text: str, head: str) -> str:
+    """A TYPE block's text as written (``text``, from its TYPE to its END_TYPE; ``head``, the part before its first
+    declaration) with the pack_mode pragma that stood above its TYPE, outside the block's span."""
+    first = block.decls[0] if block.decls else None
+    if first is None or first.pack_mode is None or _PACK_MODE.search(head):
+        return text
+    return f"{pack_mode_pragma(first.pack_mode)}\n{text}"
+
+
+def attach_pack_modes(tree: Any, text: str) -> None:
+    """Set ``pack_mode`` (the value as written) of each TYPE declaration of ``tree`` that a pack_mode pragma
+    stands above in ``text`` (the text the parser read, its spans' lines and columns)."""
+    if "pack_mode" not in text or not isinstance(tree, ast.Source):
+        return
+    starts = [0] + [m.end() for m in re.finditer("\n", text)]
+    decls = {
+        starts[d.span.line - 1] + d.span.column - 1: d
+        for item in tree.items
+        if isinstance(item, ast.TypeBlock)
+        for d in item.decls
+        if d.span.line
+    }
+    for lexed in _LEXED.finditer(text):
+        pragma = _PACK_MODE.fullmatch(lexed.group(1) or "")
+        if pragma is not None:
+            decl = decls.get(_next_declaration(text, lexed.end()))
+            if decl is not None:
+                decl.pack_mode = pragma.group(1)
+
+
+def _next_declaration(text: str, position: int) -> int:
+    """Where the next name stands after ``position``, past comments, pragmas and one ``TYPE``."""
+    position = _skip(text, position)
+    keyword = _TYPE.match(text, position)
+    return position if keyword is None else _skip(text, keyword.end())
+
+
+def _skip(text: str, position: int) -> int:
+    between = _BETWEEN.match(text, position)
+    return between.end() if between is not None else position
