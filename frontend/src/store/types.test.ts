@@ -139,6 +139,48 @@ describe("deleting and duplicating a type (issue 22 item 1)", () => {
   });
 });
 
+describe("a type's CODESYS pack_mode pragma goes and comes with it (issue 25 item 1)", () => {
+  const text = [
+    "{attribute 'pack_mode' := '1'}",
+    "TYPE",
+    "    Packed : STRUCT a : BYTE; b : DINT; END_STRUCT;",
+    "    {attribute 'pack_mode' := '2'}",
+    "    Half : STRUCT a : BYTE; b : DINT; END_STRUCT;",
+    "    Plain : STRUCT a : BYTE; b : DINT; END_STRUCT;",
+    "END_TYPE",
+    "",
+  ].join("\n");
+
+  it("deletes the pragma above a type with it, so the next type is not packed instead", () => {
+    expect(withoutType(text, "Packed").split("\n").slice(0, 4)).toEqual([
+      "TYPE",
+      "    {attribute 'pack_mode' := '2'}",
+      "    Half : STRUCT a : BYTE; b : DINT; END_STRUCT;",
+      "    Plain : STRUCT a : BYTE; b : DINT; END_STRUCT;",
+    ]);
+    expect(withoutType(text, "Half").split("\n").slice(2, 5)).toEqual([
+      "    Packed : STRUCT a : BYTE; b : DINT; END_STRUCT;",
+      "    Plain : STRUCT a : BYTE; b : DINT; END_STRUCT;",
+      "END_TYPE",
+    ]);
+    expect(withoutType(withoutType(withoutType(text, "Half"), "Plain"), "Packed")).toBe("");
+  });
+
+  it("copies the pragma with the type, above the copy", () => {
+    expect(withTypeCopy(text, "Half", "Half2")!.split("\n").slice(4, 8)).toEqual([
+      "    Half : STRUCT a : BYTE; b : DINT; END_STRUCT;",
+      "    {attribute 'pack_mode' := '2'}",
+      "    Half2 : STRUCT a : BYTE; b : DINT; END_STRUCT;",
+      "    Plain : STRUCT a : BYTE; b : DINT; END_STRUCT;",
+    ]);
+    expect(withTypeCopy(text, "Packed", "P2")!.split("\n").slice(2, 5)).toEqual([
+      "    Packed : STRUCT a : BYTE; b : DINT; END_STRUCT;",
+      "    {attribute 'pack_mode' := '1'}",
+      "    P2 : STRUCT a : BYTE; b : DINT; END_STRUCT;",
+    ]);
+  });
+});
+
 describe("a type deleted or copied in the project (issue 22 item 1)", () => {
   const project: Project = {
     name: "p",

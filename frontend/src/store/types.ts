@@ -68,10 +68,26 @@ export function typeLines(text: string, name: string): { first: number; last: nu
   return found ? { first: found.line, last: text.slice(0, found.end).split("\n").length } : null;
 }
 
-/** `text` without type `name`'s declaration; a TYPE block left empty goes too. */
+/** CODESYS's `{attribute 'pack_mode' := 'N'}` (with the blanks after it) ending right at `end`, or null. */
+function packModeBefore(text: string, end: number): { start: number; end: number; pragma: string } | null {
+  const found = /\{\s*attribute\s+'pack_mode'\s*:=\s*'[^']*'\s*\}\s*$/i.exec(text.slice(0, end));
+  return found ? { start: found.index, end, pragma: found[0].trim() } : null;
+}
+
+/** The pack_mode pragma a declaration has (the backend's st/pragmas.py): right above its name, or above its
+ * block's TYPE when it is the block's first declaration. It goes and comes with the declaration, so no other
+ * type takes it over. */
+function packModeOf(text: string, found: TypeDeclaration) {
+  const first = !blankComments(text.slice(found.block.start + 4, found.start)).trim();
+  return packModeBefore(text, found.start) ?? (first ? packModeBefore(text, found.block.start) : null);
+}
+
+/** `text` without type `name`'s declaration (and its pack_mode pragma); a TYPE block left empty goes too. */
 export function withoutType(text: string, name: string): string {
   const found = declarationOf(text, name);
   if (!found) return text;
+  const packMode = packModeOf(text, found);
+  if (packMode) return withoutType(text.slice(0, packMode.start) + text.slice(packMode.end), name);
   const lineStart = text.lastIndexOf("\n", found.start - 1) + 1;
   const from = text.slice(lineStart, found.start).trim() ? found.start : lineStart;
   const to = /^[ \t]*\n/.exec(text.slice(found.end))?.[0].length ?? 0;
@@ -90,8 +106,10 @@ export function withTypeCopy(text: string, name: string, copy: string): string |
   if (!found) return null;
   const lineStart = text.lastIndexOf("\n", found.start - 1) + 1;
   const indent = /^[ \t]*/.exec(text.slice(lineStart))![0];
+  const packMode = packModeOf(text, found);
+  const pragma = packMode ? `${packMode.pragma}\n${indent}` : "";
   const declaration = copy + text.slice(found.start + found.name.length, found.end);
-  return `${text.slice(0, found.end)}\n${indent}${declaration}${text.slice(found.end)}`;
+  return `${text.slice(0, found.end)}\n${indent}${pragma}${declaration}${text.slice(found.end)}`;
 }
 
 /** `text` with a new type `name` of `kind` in a TYPE block of its own at the end. */
