@@ -11,7 +11,11 @@ is worked out by hand in the comments.
 
 from __future__ import annotations
 
+import struct
+
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from .test_references import build
 from .test_struct_memory_views import MEMCPY, simulation
@@ -160,3 +164,63 @@ def test_a_layout_that_depends_on_the_target_is_refused_saying_how_to_fix_it(typ
             "Main",
         )
     ]
+
+
+_MEMBERS = {"BYTE": "B", "INT": "h", "DWORD": "I", "DINT": "i", "LINT": "q", "ULINT": "Q", "LWORD": "Q"}
+
+
+def _packed_format(types: list[str], pack: int) -> str:
+    """The ``struct`` format of a STRUCT of these members with ``{attribute 'pack_mode' := 'pack'}``, padding
+    written out as ``x``, from CODESYS's table: each member at a multiple of min(its size, pack), the whole a
+    multiple of the largest of those."""
+    fmt, offset, largest = "<", 0, 1
+    for name in types:
+        align = min(struct.calcsize("<" + _MEMBERS[name]), pack)
+        fmt += "x" * (-offset % align) + _MEMBERS[name]
+        offset += -offset % align + struct.calcsize("<" + _MEMBERS[name])
+        largest = max(largest, align)
+    return fmt + "x" * (-offset % largest)
+
+
+@settings(max_examples=25, deadline=None)
+@given(
+    st.lists(st.sampled_from(sorted(_MEMBERS)), min_size=1, max_size=5),
+    st.sampled_from([1, 2, 4, 8]),
+    st.lists(st.tuples(st.integers(0, 47), st.integers(0, 255)), min_size=1, max_size=6),
+)
+def test_random_byte_writes_into_a_packed_struct_read_back_as_the_reference_layout_says(types, pack, writes):
+    """Bytes written one by one through a POINTER TO BYTE into a packed STRUCT of random 1- to 8-byte members: the
+    members, SIZEOF (TYP-45) and every byte read back are what Python's ``struct`` gives for the same bytes with
+    the padding written out; a nonzero byte into padding is the fault instead."""
+    fmt = _packed_format(types, pack)
+    size = struct.calcsize(fmt)
+    writes = [(offset % size, byte) for offset, byte in writes]
+    members = "".join(f"m{i} : {name}; " for i, name in enumerate(types))
+    body = "".join(f"pb := ADR(r);\npb := pb + {offset};\npb^ := {byte};\n" for offset, byte in writes)
+    sim = simulation(
+        f"{{attribute 'pack_mode' := '{pack}'}}\nTYPE X : STRUCT {members}END_STRUCT; END_TYPE\n",
+        f"r : X; pb : POINTER TO BYTE; n : DINT; out : ARRAY [0..{size - 1}] OF BYTE; i : INT;",
+        f"n := SIZEOF(r);\n{body}pb := ADR(r);\nFOR i := 0 TO {size - 1} DO\n  out[i] := pb^;\n  pb := pb + 1;\nEND_FOR;",
+    )
+    padding = set(range(size)) - {i for start, length in _member_bytes(fmt) for i in range(start, start + length)}
+    sim.cycle(1)
+    if any(offset in padding and byte for offset, byte in writes):
+        assert sim.fault is not None and sim.fault.code == "index_out_of_range"
+        return
+    memory = bytearray(size)
+    for offset, byte in writes:
+        memory[offset] = byte
+    assert sim.fault is None and sim.read("Main.n") == size
+    assert sim.read("Main.out") == list(memory)
+    assert sim.read("Main.r") == {f"M{i}": v for i, v in enumerate(struct.unpack(fmt, memory))}
+
+
+def _member_bytes(fmt: str) -> list[tuple[int, int]]:
+    """(offset, size) of each member (not ``x``) of a ``struct`` format."""
+    found, offset = [], 0
+    for code in fmt[1:]:
+        size = struct.calcsize("<" + code)
+        if code != "x":
+            found.append((offset, size))
+        offset += size
+    return found
