@@ -49,6 +49,17 @@ def test_ladderlab_s_file_and_another_tool_s_both_come_back_packed():
     data = export_plcopen(project)
     ours = import_plcopen(data).project
     assert ours is not None and ours.types == TYPES
-    foreign = import_plcopen(strip_ladderlab(data)).project
-    assert foreign is not None and "{attribute 'pack_mode' := '1'}\n    P : STRUCT" in foreign.types
-    assert sizeof_p(foreign) == 5
+    foreign = import_plcopen(strip_ladderlab(data))
+    assert foreign.diagnostics == []  # CODESYS's attributes entry read, so nothing reported dropped
+    assert foreign.project is not None and "{attribute 'pack_mode' := '1'}\n    P : STRUCT" in foreign.project.types
+    assert sizeof_p(foreign.project) == 5
+
+
+def test_a_value_no_pragma_can_hold_is_a_located_import_error():
+    """Another tool's ``Value="1'"`` would end the pragma early and vanish when the text is read: an error at the
+    data type instead, the STRUCT imported without it."""
+    data = export_plcopen(Project(name="packed", types=TYPES, pous=[MAIN]))
+    result = import_plcopen(strip_ladderlab(data).replace(b'Value="1"', b'Value="1\'"'), file="plc.xml")
+    errors = [(d.code, d.message, d.file) for d in result.diagnostics if d.severity == "error"]
+    assert errors == [("PLCOPEN-DECL", 'the pack_mode "1\'" cannot be written as a pragma; it is left out', "plc.xml")]
+    assert result.project is not None and "pack_mode" not in result.project.types

@@ -6,7 +6,7 @@ variable the access covers, ``Layout.write`` splices new bytes in and decodes th
 bytes the variable cannot hold exactly (a BOOL byte of 2, a character after a STRING's terminator, a STRUCT's
 padding byte other than 0) is a fault, so no value changes other than the bytes written. The layouts come from
 the lowering as specs (ir/byte_layout.py): ``("int", size, signed)``, ``("real", size)``, ``("bool",)``,
-``("string", n)``, ``("array", count, element spec)``, ``("struct", name, size, alignment, members)``.
+``("string", n)``, ``("array", count, element spec)``, ``("struct", name, size, pack_mode, members)``.
 """
 
 from __future__ import annotations

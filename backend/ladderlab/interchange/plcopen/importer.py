@@ -61,7 +61,7 @@ from .methods import (
     read_properties,
 )
 from .sfc_import import SfcImporter
-from .vars import KIND_BY_LIST, VarReader, parse_type_text, write_data_type, write_type, write_var_list
+from .vars import ATTRIBUTES_DATA, KIND_BY_LIST, VarReader, parse_type_text, write_data_type, write_type, write_var_list
 from .xml_io import (
     LADDERLAB_DATA,
     PLCOPEN_NAMESPACES,
@@ -225,17 +225,31 @@ class _Importer:
 
     # ------------------------------------------------------------ addData bookkeeping
 
-    def note_foreign(self, entries: list[ET.Element]) -> None:
+    def note_foreign(self, entries: list[ET.Element], holder: str) -> None:
         for data in entries:
             kinds = {(data.get("name", ""), local(c)) for c in data if isinstance(c.tag, str)}
+            if holder == "dataType" and self.only_pack_mode(data):
+                continue  # a STRUCT's pack_mode, read with its data type (vars.py)
             if not kinds or not kinds <= _UNDERSTOOD:
                 self.foreign[data.get("name", "")] += 1
 
+    def only_pack_mode(self, data: ET.Element) -> bool:
+        """Whether a CODESYS attributes entry holds pack_mode alone."""
+        r = self.reader
+        names = {a.get("Name") for holder in r.children(data, "Attributes") for a in r.children(holder, "Attribute")}
+        return data.get("name") == ATTRIBUTES_DATA and names == {"pack_mode"}
+
     def collect_foreign(self, root: ET.Element) -> None:
         """Count other tools' addData entries anywhere in the document (those not understood are reported)."""
-        for element in root.iter():
-            if isinstance(element.tag, str) and local(element) == "addData" and namespace(element) == self.reader.ns:
-                self.note_foreign([d for d in self.reader.children(element, "data") if d.get("name") != LADDERLAB_DATA])
+        for parent in root.iter():
+            for element in parent:
+                if (
+                    isinstance(element.tag, str)
+                    and local(element) == "addData"
+                    and namespace(element) == self.reader.ns
+                ):
+                    entries = [d for d in self.reader.children(element, "data") if d.get("name") != LADDERLAB_DATA]
+                    self.note_foreign(entries, local(parent))
 
     # ------------------------------------------------------------ POUs
 

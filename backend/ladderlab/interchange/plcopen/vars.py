@@ -303,9 +303,15 @@ class VarReader:
             for holder in r.children(data, "Attributes")
             for attribute in r.children(holder, "Attribute")
         ]
+        pack_mode = next((a.get("Value") for a in attributes if a.get("Name") == "pack_mode"), None)
+        if pack_mode is not None and ("'" in pack_mode or "}" in pack_mode):
+            self._problem(
+                f"the pack_mode {pack_mode!r} cannot be written as a pragma; it is left out", element, "error"
+            )
+            pack_mode = None
         return ast.TypeDecl(
             element.get("name", ""),
             self.type(r.child(element, "baseType")),
             self.value(r.child(element, "initialValue")),
-            pack_mode=next((a.get("Value") for a in attributes if a.get("Name") == "pack_mode"), None),
+            pack_mode=pack_mode,
         )
