@@ -13,6 +13,7 @@ from ladderlab.iec.values import (
     DT_MAX,
     FLT_MAX,
     INLINE_NAMES,
+    article,
     coerce,
     default_value,
     f32,
@@ -260,3 +261,18 @@ def test_coerce_accepts_exactly_the_range(type_name, data):
     outside = data.draw(st.one_of(st.integers(max_value=lo - 1), st.integers(min_value=hi + 1)))
     with pytest.raises(ValueError, match="out of range"):
         coerce(outside, type_name)
+
+
+def test_type_names_take_the_article_they_are_read_aloud_with():
+    """Messages say 'an LREAL' (el-real) and 'an SINT' (ess-int), 'a STRING' and 'a UINT' (you-int)."""
+    assert [article(t) for t in ("INT", "REAL", "LREAL", "LWORD", "LTIME", "SINT", "STRING", "UINT", "ULINT")] == [
+        "an INT",
+        "a REAL",
+        "an LREAL",
+        "an LWORD",
+        "an LTIME",
+        "an SINT",
+        "a STRING",
+        "a UINT",
+        "a ULINT",
+    ]

@@ -22,6 +22,7 @@ import re
 from dataclasses import dataclass
 
 from .elementary import ELEMENTARY, canonical_type_name
+from .values import article
 
 #: Area letter as written -> the memory it names.
 AREAS = {"I": "I", "Q": "Q", "M": "M", "X": "I", "Y": "Q", "R": "M", "S": "S"}
@@ -95,14 +96,14 @@ def type_problem(address: Address, type_name: str) -> str | None:
     name = canonical_type_name(type_name)
     info = ELEMENTARY.get(name)
     if info is None or info.category == "string":
-        return f"a {type_name} cannot be located at {address.text}: only elementary types other than STRING can"
+        return f"{article(type_name)} cannot be located at {address.text}: only elementary types other than STRING can"
     if address.bit is not None:
         return None if name == "BOOL" else f"{address.text} is a bit: only a BOOL can be located there"
     if name == "BOOL":
         return None  # its first byte, 0 or 1
     width = max(1, info.bits // 8)
     if width != address.width:
-        return f"{address.text} has {address.width * 8} bits: a {name} has {info.bits}"
+        return f"{address.text} has {address.width * 8} bits: {article(name)} has {info.bits}"
     return None
 
 

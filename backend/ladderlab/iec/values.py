@@ -175,8 +175,10 @@ def default_value(type_name: str) -> object:
 
 
 def article(type_name: str) -> str:
-    """'an INT', 'a REAL': for error messages."""
-    return ("an " if type_name[:1] in "AEIO" else "a ") + type_name
+    """'an INT', 'a REAL', 'an LREAL', 'an SINT': for error messages, as the name is read aloud (the long types'
+    L and SINT's S are spelt out: "an el-real"; STRING and STRUCT are words)."""
+    spelt = type_name[:1] in "AEIO" or type_name == "SINT" or (type_name[:1] == "L" and type_name[1:2].isupper())
+    return ("an " if spelt else "a ") + type_name
 
 
 def coerce(value: object, type_name: str) -> object:

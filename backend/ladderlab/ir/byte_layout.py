@@ -16,6 +16,7 @@ to 8-byte members, so such a layout is worked out both ways and kept only when b
 
 from __future__ import annotations
 
+from ..iec.values import article
 from .types import Array, Elementary, Enum, IrType, Reference, Struct, Subrange, describe
 
 Spec = tuple
@@ -48,7 +49,7 @@ def _layout(ty: IrType, default: int) -> Spec | str:
             return ("real", info.bits // 8)
         if ty.name == "STRING":
             return ("string", ty.max_length)
-        return f"a {describe(ty)} (its bytes in CODESYS are not the value LadderLab keeps)"
+        return f"{article(describe(ty))} (its bytes in CODESYS are not the value LadderLab keeps)"
     if isinstance(ty, Array):
         spec = _layout(ty.element, default)
         if isinstance(spec, str):
@@ -61,8 +62,8 @@ def _layout(ty: IrType, default: int) -> Spec | str:
     if isinstance(ty, Enum):
         return f"the enumeration {ty.name} (CODESYS stores it as its base type, INT unless it names another)"
     if isinstance(ty, Reference):
-        return f"a {describe(ty)} (an address: 4 or 8 bytes depending on the target)"
-    return f"a {describe(ty)} (it has no byte layout)"
+        return f"{article(describe(ty))} (an address: 4 or 8 bytes depending on the target)"
+    return f"{article(describe(ty))} (it has no byte layout)"
 
 
 def seen_layout(ty: IrType) -> Spec | str:

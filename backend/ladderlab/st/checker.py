@@ -13,6 +13,7 @@ from typing import Any
 from ..iec import stdlib
 from ..iec.addresses import incomplete, parse_address, type_problem
 from ..iec.spelling import did_you_mean
+from ..iec.values import article
 from ..model.diagnostics import Diagnostic
 from ..model.names import pou_name_problem
 from ..model.project import Project
@@ -484,7 +485,8 @@ class ProjectChecker:
             if problem:
                 report("ST-ADDRESS", problem, name)
         elif ty is not ERROR and not isinstance(ty, t.Elementary):
-            report("ST-ADDRESS", f"a {ty} cannot be located at {address.text}: only elementary types can", name)
+            where = f"cannot be located at {address.text}: only elementary types can"
+            report("ST-ADDRESS", f"{article(str(ty))} {where}", name)
 
     def _check_decl(self, block, decl: ast.VarDecl, ty: Type, pou: PouInfo | None, report) -> None:
         if decl.edge and (block.kind != "VAR_INPUT" or not t.same(ty, t.BOOL) or pou is None or pou.kind == "FUNCTION"):
@@ -508,7 +510,8 @@ class ProjectChecker:
         if isinstance(ty, t.PointerType) and block.retain:
             report(
                 "ST-DECL",
-                f"a {ty} cannot be RETAIN: a restart makes the variables it refers to anew (set it again after one)",
+                f"{article(str(ty))} cannot be RETAIN: a restart makes the variables it refers to anew "
+                "(set it again after one)",
                 decl,
             )
         if block.constant and decl.init is None and block.kind != "VAR_EXTERNAL":

@@ -325,7 +325,7 @@ class Expressions:
                 code = self.alias[1]
             if isinstance(selector, ir.Deref):
                 if not isinstance(ty, t.Reference):
-                    raise CodegenError(f"'^' on a {describe(ty)}")
+                    raise CodegenError(f"'^' on {values.article(describe(ty))}")
                 code, ty = f"{_dereferenced(code, ir.Var(v.scope, v.name, ty, v.path[:number]))}.v", ty.target
             else:
                 code, ty = self.select(code, ty, selector)
@@ -354,7 +354,7 @@ class Expressions:
     def select(self, code: str, ty: t.IrType, selector: ir.Index | ir.Member) -> tuple[str, t.IrType]:
         if isinstance(selector, ir.Index):
             if not isinstance(ty, t.Array):
-                raise CodegenError(f"cannot index a {describe(ty)}")
+                raise CodegenError(f"cannot index {values.article(describe(ty))}")
             if not 0 < len(selector.indices) <= len(ty.dims):
                 raise CodegenError(f"{len(selector.indices)} indices for an array of {len(ty.dims)} dimensions")
             for index, (lo, hi) in zip(selector.indices, ty.dims):
@@ -404,7 +404,7 @@ class Expressions:
                     f"{ty.fb} has no pin {member}" if std_fb_class(ty.fb) else f"unknown function block {ty.fb}"
                 )
             return code, member.upper()
-        raise CodegenError(f"a {describe(ty)} has no members")
+        raise CodegenError(f"{values.article(describe(ty))} has no members")
 
     def member_type(self, ty: t.IrType, member: str) -> t.IrType:
         if isinstance(ty, t.Struct):

@@ -22,7 +22,7 @@ from collections.abc import Callable, Iterator
 from contextlib import contextmanager, nullcontext
 from typing import ClassVar
 
-from ...iec.values import store_expr
+from ...iec.values import article, store_expr
 from ...ir import nodes as ir
 from ...ir import types as t
 from ...ir.types import describe
@@ -553,7 +553,7 @@ class Statements:
     def _for(self, s: ir.For, oid: int) -> None:
         var, ty = self.x.access(s.var)
         if is_composite(ty):
-            raise CodegenError(f"a FOR variable cannot be a {describe(ty)}")
+            raise CodegenError(f"a FOR variable cannot be {article(describe(ty))}")
         self.store(s.var, s.start)
         values = self.scope.temp("r")
         end, step = self.x.expr(s.end), self.x.expr(s.step)
