@@ -13,7 +13,6 @@ from typing import TYPE_CHECKING
 
 from ..engine.variants import VARIANTS
 from ..model import has_errors
-from ..model.schema import SCHEMA_MODELS, schema_of
 from ..simulation.registry import SimulationRegistry, SimulationSettings
 from ..storage import StorageError, load_project_path
 from ..storage.atomic import write_atomic
@@ -31,6 +30,9 @@ if TYPE_CHECKING:  # the server and the compiler are imported only by the comman
     from .run import Row
 
 EXIT_OK, EXIT_ERRORS, EXIT_USAGE, EXIT_RUNTIME, EXIT_NOT_REACHED, EXIT_INTERNAL = 0, 1, 2, 3, 4, 70
+#: ``schema --name``: the files of ``model.schema.SCHEMA_MODELS``, which imports the monitor's models when the command
+#: runs (not to serve: startup, issue 27).
+SCHEMA_FILES = ("monitor.schema.json", "project.schema.json")
 #: How many scans ``--until`` runs at most when neither --cycles nor --for says.
 UNTIL_LIMIT = 1_000_000
 
@@ -234,7 +236,7 @@ def _parser() -> argparse.ArgumentParser:
     import_.set_defaults(func=_import)
 
     schema = sub.add_parser("schema", help="print the JSON Schema of the project model")
-    schema.add_argument("--name", choices=sorted(SCHEMA_MODELS), default="project.schema.json")
+    schema.add_argument("--name", choices=SCHEMA_FILES, default="project.schema.json")
     schema.set_defaults(func=_schema)
     return parser
 
@@ -465,6 +467,8 @@ def _import(args: argparse.Namespace) -> int:
 
 
 def _schema(args: argparse.Namespace) -> int:
+    from ..model.schema import SCHEMA_MODELS, schema_of
+
     print(json.dumps(schema_of(SCHEMA_MODELS[args.name]), indent=2, sort_keys=True))
     return EXIT_OK
 

@@ -18,7 +18,7 @@ from starlette.types import ASGIApp, Message, Receive, Scope, Send
 
 from ..json_guard import json_problem
 from ..model import Diagnostic, Project
-from ..model.api import ErrorDetail
+from ..model.answers import ErrorDetail
 from ..storage import Workspace
 from ..storage.project_folder import project_files
 from .errors import ApiError
