@@ -20,12 +20,13 @@ COMPILER = ("lark", "ladderlab.ir", "ladderlab.engine.codegen", "ladderlab.inter
 ROUTES = ("ladderlab.model.api", "ladderlab.model.monitor", "ladderlab.model.schema", "ladderlab.simulation.remote")
 
 _SERVE_UNTIL_UVICORN_RUNS = """
-import json, sys
+import gc, json, sys
 import uvicorn
 HEAVY = tuple(sys.argv[2].split(","))
 def report(self):
     loaded = [m for m in sys.modules if any(m == c or m.startswith(c + ".") for c in HEAVY)]
     print("LOADED " + json.dumps(sorted(loaded)))
+    print("GC " + json.dumps([gc.isenabled(), gc.get_freeze_count()]))
 uvicorn.Server.run = report
 from ladderlab.cli import main
 main(["serve", "--port", "8765", "--workspace", sys.argv[1]])
@@ -43,12 +44,20 @@ def _serve_until_uvicorn_runs(workspace: Path) -> dict[str, list[object]]:
     return {
         line.split(" ", 1)[0]: json.loads(line.split(" ", 1)[1])
         for line in done.stdout.splitlines()
-        if line.startswith("LOADED ")
+        if line.startswith(("LOADED ", "GC "))
     }
 
 
 def test_serve_imports_no_compiler_and_no_route_models_before_it_answers(tmp_path: Path) -> None:
     assert _serve_until_uvicorn_runs(tmp_path / "workspace")["LOADED"] == []
+
+
+def test_serve_freezes_what_it_made_to_start_and_collects_again(tmp_path: Path) -> None:
+    """collector.frozen_start: the start's objects are out of every later collection's way, and the collector is on
+    again when the server runs (it was off while they were made)."""
+    enabled, frozen = _serve_until_uvicorn_runs(tmp_path / "workspace")["GC"]
+    assert enabled is True
+    assert isinstance(frozen, int) and frozen > 10_000  # FastAPI's, uvicorn's and the app's objects: ~75,000
 
 
 def test_the_first_export_imports_the_compiler_in_the_web_process(tmp_path: Path) -> None:

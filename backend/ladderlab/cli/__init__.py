@@ -11,6 +11,7 @@ from collections.abc import Iterator
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from ..collector import frozen_start
 from ..engine.variants import VARIANTS
 from ..model import has_errors
 from ..simulation.registry import SimulationRegistry, SimulationSettings
@@ -24,6 +25,8 @@ from .libraries import add_library_option, using_libraries
 from .test import add_test_command
 
 if TYPE_CHECKING:  # the server and the compiler are imported only by the commands that use them (issue 27)
+    import uvicorn
+
     from ..model import Project
     from ..server.security import Security
     from ..simulation.build import Build
@@ -494,6 +497,16 @@ def _non_negative(text: str) -> int:
 
 
 def _serve(args: argparse.Namespace) -> int:
+    with frozen_start():
+        server = _server(args)
+    if isinstance(server, int):
+        return server
+    server.run()
+    return EXIT_OK
+
+
+def _server(args: argparse.Namespace) -> uvicorn.Server | int:
+    """The server ``serve`` runs, its modules imported and its app made; an exit code when the options refuse it."""
     import uvicorn
 
     from ..examples import seed_workspace
@@ -534,8 +547,8 @@ def _serve(args: argparse.Namespace) -> int:
         limit_concurrency=max(64, open_files - 64),  # connections beyond it get a 503, never EMFILE
     )
     install_repeat_filter()  # after uvicorn.Config, which sets up the server's log handlers
-    uvicorn.Server(config).run()
-    return EXIT_OK
+    config.load()  # imports the protocols' modules now, under frozen_start
+    return uvicorn.Server(config)
 
 
 def serve_security(args: argparse.Namespace) -> Security:
