@@ -93,7 +93,7 @@ def _meta(folder: Path) -> dict[str, Any]:
 def seed_workspace(workspace: Workspace) -> str | None:
     """Copy the example project into an empty workspace; returns its name, or None if nothing was done."""
     source = EXAMPLES_DIR / DEFAULT_EXAMPLE
-    if workspace.list() or not source.is_dir():
+    if workspace.names() or not source.is_dir():  # names: loading every project would slow each serve start
         return None
     workspace.create(read_project_folder(source).model_copy(update={"name": DEFAULT_EXAMPLE}))
     return DEFAULT_EXAMPLE

@@ -14,7 +14,7 @@ from pathlib import Path
 
 import pytest
 
-from ladderlab.server.app import STATIC_DIR
+from ladderlab.server import STATIC_DIR
 from tests.live_server import LiveServer
 
 ARTIFACTS = Path(__file__).parent / "artifacts"

@@ -8,6 +8,8 @@ import subprocess
 import sys
 from pathlib import Path
 
+from ladderlab.cli import SCHEMA_FILES
+from ladderlab.model.schema import SCHEMA_MODELS
 from ladderlab.server.app import create_app
 from ladderlab.storage import Workspace, load_project_path
 from tests.support import EXAMPLES, api_client
@@ -70,6 +72,19 @@ def test_schema_prints_project_schema() -> None:
     schema = json.loads(result.stdout)
     assert schema["title"] == "Project"
     assert {"name", "format", "types", "globals", "pous", "tasks"} <= set(schema["properties"])
+
+
+def test_schema_names_are_the_schema_models() -> None:
+    """``schema --name`` offers exactly the files model/schema.py makes (the CLI names them without importing it)."""
+    assert tuple(sorted(SCHEMA_MODELS)) == SCHEMA_FILES
+
+
+def test_the_command_line_imports_no_web_framework() -> None:
+    """check, run, test, export... never serve: FastAPI and uvicorn come with ``serve`` only (ladderlab doc finds the
+    print view through ``server.STATIC_DIR``, not the app's module; issue 27, startup)."""
+    code = "import sys, ladderlab.cli; print(sorted({m.split('.')[0] for m in sys.modules} & {'fastapi', 'starlette', 'uvicorn'}))"
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60, check=True)
+    assert done.stdout.strip() == "[]"
 
 
 def test_serve_refuses_remote_bind_without_flag() -> None:

@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 import json
+import subprocess
+import sys
 
 import pytest
 from hypothesis import given
@@ -71,3 +73,31 @@ def test_names_and_literals_ending_in_a_newline_are_refused() -> None:
     assert project_name_problem("motor\n") is not None
     project = Project(name="p", tasks=[{"name": "T", "interval": "T#10ms\n", "programs": []}])
     assert [d.json_path for d in validate_project(project)] == ["$.tasks[0].interval"]
+
+
+_BUILT_AT_IMPORT = """
+import pydantic
+import ladderlab.model.api, ladderlab.model.monitor, ladderlab.model.sfc, ladderlab.server.app
+from ladderlab.model.ld import Box, Parallel
+from ladderlab.model.sfc import SfcParallel
+def ours(cls):
+    for sub in cls.__subclasses__():
+        if sub.__module__.startswith("ladderlab."):
+            yield sub
+        yield from ours(sub)
+print(sorted({c.__qualname__ for c in ours(pydantic.BaseModel) if c.__pydantic_complete__}))
+contact = {"type": "contact", "id": "c", "var": "a"}
+print(Parallel.model_validate({"id": "p", "branches": [[contact]]}).branches[0][0].var)
+print(Box.model_validate({"id": "b", "call": "TON", "inputs": {"IN": [contact]}}).inputs["IN"][0].var)
+print(SfcParallel.model_validate({"id": "p", "branches": [[{"type": "step", "id": "s", "name": "A"}]]}).branches[0][0].name)
+"""
+
+
+def test_importing_the_models_and_the_app_builds_no_validator() -> None:
+    """Pydantic builds a model's validator at its first use (model/base.py): a ``model_rebuild()`` at import, or a
+    plain ``BaseModel``, cost every ``ladderlab serve`` start its build (issue 27, startup). The recursive models still
+    find the element unions they name before those are defined, at their first use."""
+    done = subprocess.run(
+        [sys.executable, "-c", _BUILT_AT_IMPORT], capture_output=True, text=True, timeout=120, check=True
+    )
+    assert done.stdout.splitlines() == ["[]", "a", "a", "A"]

@@ -11,6 +11,7 @@ from pathlib import Path
 import pytest
 from hypothesis import example, given
 
+from ladderlab.examples import seed_workspace
 from ladderlab.model import Pou, Project
 from ladderlab.storage import (
     AlreadyExistsError,
@@ -383,3 +384,21 @@ def test_a_save_returns_the_revision_the_saved_folder_loads_with(ws: Workspace, 
     assert ws.load("motor").revision == saved
     without = added.model_copy(update={"tests": added.tests[:-1]})
     assert ws.save(without, saved) == ws.load("motor").revision
+
+
+def test_names_lists_project_folders_without_loading_them(ws: Workspace, motor: Project, monkeypatch) -> None:
+    """``ladderlab serve`` asks whether the workspace is empty before it adds the example (examples.seed_workspace):
+    loading every project for that made each start of a full workspace slower (issue 27, startup)."""
+    ws.create(motor.model_copy(update={"name": "b"}))
+    ws.create(motor.model_copy(update={"name": "a"}))
+    (ws.root / "broken").mkdir()
+    (ws.root / "broken" / "project.json").write_text("{", encoding="utf-8")
+    (ws.root / "no_project").mkdir()
+    (ws.root / ".trash").mkdir()
+
+    def no_load(name: str) -> None:
+        raise AssertionError(f"{name} was loaded")
+
+    monkeypatch.setattr(ws, "load", no_load)
+    assert ws.names() == ["a", "b", "broken"]
+    assert seed_workspace(ws) is None

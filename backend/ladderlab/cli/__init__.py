@@ -11,9 +11,9 @@ from collections.abc import Iterator
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from ..collector import frozen_start
 from ..engine.variants import VARIANTS
 from ..model import has_errors
-from ..model.schema import SCHEMA_MODELS, schema_of
 from ..simulation.registry import SimulationRegistry, SimulationSettings
 from ..storage import StorageError, load_project_path
 from ..storage.atomic import write_atomic
@@ -25,12 +25,17 @@ from .libraries import add_library_option, using_libraries
 from .test import add_test_command
 
 if TYPE_CHECKING:  # the server and the compiler are imported only by the commands that use them (issue 27)
+    import uvicorn
+
     from ..model import Project
     from ..server.security import Security
     from ..simulation.build import Build
     from .run import Row
 
 EXIT_OK, EXIT_ERRORS, EXIT_USAGE, EXIT_RUNTIME, EXIT_NOT_REACHED, EXIT_INTERNAL = 0, 1, 2, 3, 4, 70
+#: ``schema --name``: the files of ``model.schema.SCHEMA_MODELS``, which imports the monitor's models when the command
+#: runs (not to serve: startup, issue 27).
+SCHEMA_FILES = ("monitor.schema.json", "project.schema.json")
 #: How many scans ``--until`` runs at most when neither --cycles nor --for says.
 UNTIL_LIMIT = 1_000_000
 
@@ -234,7 +239,7 @@ def _parser() -> argparse.ArgumentParser:
     import_.set_defaults(func=_import)
 
     schema = sub.add_parser("schema", help="print the JSON Schema of the project model")
-    schema.add_argument("--name", choices=sorted(SCHEMA_MODELS), default="project.schema.json")
+    schema.add_argument("--name", choices=SCHEMA_FILES, default="project.schema.json")
     schema.set_defaults(func=_schema)
     return parser
 
@@ -465,6 +470,8 @@ def _import(args: argparse.Namespace) -> int:
 
 
 def _schema(args: argparse.Namespace) -> int:
+    from ..model.schema import SCHEMA_MODELS, schema_of
+
     print(json.dumps(schema_of(SCHEMA_MODELS[args.name]), indent=2, sort_keys=True))
     return EXIT_OK
 
@@ -490,6 +497,16 @@ def _non_negative(text: str) -> int:
 
 
 def _serve(args: argparse.Namespace) -> int:
+    with frozen_start():
+        server = _server(args)
+    if isinstance(server, int):
+        return server
+    server.run()
+    return EXIT_OK
+
+
+def _server(args: argparse.Namespace) -> uvicorn.Server | int:
+    """The server ``serve`` runs, its modules imported and its app made; an exit code when the options refuse it."""
     import uvicorn
 
     from ..examples import seed_workspace
@@ -530,8 +547,8 @@ def _serve(args: argparse.Namespace) -> int:
         limit_concurrency=max(64, open_files - 64),  # connections beyond it get a 503, never EMFILE
     )
     install_repeat_filter()  # after uvicorn.Config, which sets up the server's log handlers
-    uvicorn.Server(config).run()
-    return EXIT_OK
+    config.load()  # imports the protocols' modules now, under frozen_start
+    return uvicorn.Server(config)
 
 
 def serve_security(args: argparse.Namespace) -> Security:

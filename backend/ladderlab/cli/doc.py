@@ -19,7 +19,7 @@ import sys
 import tempfile
 from pathlib import Path
 
-from ..server.app import STATIC_DIR
+from ..server import STATIC_DIR
 from ..storage import load_project_path
 from ..storage.atomic import write_atomic
 

@@ -168,22 +168,6 @@ class LibraryEntry(Model):
     )
 
 
-class ErrorDetail(Model):
-    """The ``detail`` of every error response except save conflicts."""
-
-    message: str
-    diagnostics: list[Diagnostic] = Field(default_factory=list)
-
-
-class ConflictDetail(Model):
-    """The ``detail`` of a 409 from a save based on an old revision."""
-
-    message: str
-    base_revision: str | None
-    current_revision: str
-    current_modified: datetime | None
-
-
 class ScanTimes(Model):
     """Wall time of the scans run so far, in milliseconds (halted time excluded)."""
 
@@ -525,10 +509,3 @@ class PrintDocument(Model):
     symbols: dict[str, list[SymbolInfo]] = Field(description="Each printed POU's declarations, by POU name.")
     globals: list[SymbolInfo]
     xref: XrefList
-
-
-class Health(Model):
-    """``GET /api/health``: the server answers, and which version it is."""
-
-    status: str = Field(description='"ok" while the server answers.')
-    version: str

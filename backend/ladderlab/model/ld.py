@@ -71,13 +71,11 @@ class Return(_Element):
     type: Literal["return"] = "return"
 
 
+# Parallel and Box name LdElement before it exists: their validators, built at first use (model/base.py), find it here
 LdElement = Annotated[
     Contact | Compare | Coil | Parallel | Box | Jump | Return,
     Field(discriminator="type"),
 ]
-
-Parallel.model_rebuild()
-Box.model_rebuild()
 
 
 class LdNetwork(Model):

@@ -90,13 +90,12 @@ class SfcJump(_Item):
     target: str = Field(description="The name of the step the chart continues at.")
 
 
+# SfcAlternative and SfcParallel name SfcElement before it exists: their validators, built at first use
+# (model/base.py), find it here
 SfcElement = Annotated[
     SfcStep | SfcTransition | SfcAlternative | SfcParallel | SfcJump,
     Field(discriminator="type"),
 ]
-
-SfcAlternative.model_rebuild()
-SfcParallel.model_rebuild()
 
 
 class SfcChart(Model):

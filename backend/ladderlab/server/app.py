@@ -10,7 +10,6 @@ import threading
 import warnings
 from collections.abc import AsyncIterator
 from contextlib import asynccontextmanager
-from pathlib import Path
 
 from fastapi import FastAPI, Request, Response
 from fastapi.responses import HTMLResponse
@@ -18,16 +17,15 @@ from fastapi.staticfiles import StaticFiles
 from pydantic.warnings import UnsupportedFieldAttributeWarning
 
 from .. import __version__
-from ..model.api import Health
+from ..model.answers import Health
 from ..model.base import build_all
 from ..storage import Workspace
+from . import STATIC_DIR
 from .context import registry_of
 from .errors import install_error_handlers
 from .limits import BodySizeLimit, JsonGuard, Limits, WebsocketLimit
 from .routes import HEALTH, LazyRoutes
 from .security import Security, SecurityMiddleware
-
-STATIC_DIR = Path(__file__).parent / "static"
 
 _PLACEHOLDER = """<!doctype html>
 <html lang="en"><head><meta charset="utf-8"><title>LadderLab</title></head>

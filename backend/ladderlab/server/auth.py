@@ -24,7 +24,7 @@ from starlette.datastructures import Headers
 from starlette.responses import JSONResponse, RedirectResponse
 from starlette.types import Receive, Scope, Send
 
-from ..model.api import ErrorDetail
+from ..model.answers import ErrorDetail
 
 #: Reachable without a session: the health check (container probes), the login page and its API.
 PUBLIC_PATHS = frozenset({"/api/health", "/login", "/api/login"})

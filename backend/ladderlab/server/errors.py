@@ -21,7 +21,8 @@ from pydantic_core import ErrorDetails
 from starlette.exceptions import HTTPException
 
 from ..model import Diagnostic
-from ..model.api import ConflictDetail, ErrorDetail
+from ..model.answers import ConflictDetail, ErrorDetail
+from ..model.base import Model
 from ..simulation.registry import RegistryFull, UnknownSimulation
 from ..storage import (
     AlreadyExistsError,
@@ -47,11 +48,11 @@ class ApiError(Exception):
         self.detail = ErrorDetail(message=message, diagnostics=diagnostics or [])
 
 
-class ErrorResponse(BaseModel):
+class ErrorResponse(Model):
     detail: ErrorDetail
 
 
-class ConflictResponse(BaseModel):
+class ConflictResponse(Model):
     detail: ConflictDetail
 
 

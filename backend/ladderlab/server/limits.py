@@ -18,7 +18,7 @@ from starlette.types import ASGIApp, Message, Receive, Scope, Send
 
 from ..json_guard import json_problem
 from ..model import Diagnostic, Project
-from ..model.api import ErrorDetail
+from ..model.answers import ErrorDetail
 from ..storage import Workspace
 from ..storage.project_folder import project_files
 from .errors import ApiError
@@ -174,7 +174,7 @@ def check_project_size(project: Project, limits: Limits) -> None:
 
 def check_room_for_project(workspace: Workspace, limits: Limits) -> None:
     """Refuse to create a project when the workspace already holds the maximum number."""
-    count = len(workspace.list())
+    count = len(workspace.names())
     if count >= limits.max_projects:
         raise ApiError(
             429, f"the workspace already holds {count} projects, the most this server allows; delete one first"

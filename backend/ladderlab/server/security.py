@@ -30,7 +30,7 @@ from starlette.responses import JSONResponse
 from starlette.types import ASGIApp, Message, Receive, Scope, Send
 from starlette.websockets import WebSocket
 
-from ..model.api import ErrorDetail
+from ..model.answers import ErrorDetail
 from .auth import Auth
 from .limits import media_type
 

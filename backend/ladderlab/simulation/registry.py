@@ -16,11 +16,15 @@ import secrets
 import threading
 import time
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 from ..model import Diagnostic, Project
 from .builds import BuildPool
-from .remote import Maker, SimulationHandle, WorkerSettings
 from .supervisor import WorkerHub
+from .worker_settings import WorkerSettings
+
+if TYPE_CHECKING:
+    from .remote import Maker, SimulationHandle
 
 MB = 1024 * 1024
 
@@ -137,6 +141,10 @@ class SimulationRegistry:
     def create(self, project: Project, revision: str, make: Maker | None = None) -> SimulationEntry:
         """Build ``project`` in a new simulation process (stopped), or have ``make`` make it there; raises
         ``remote.BuildFailed``, ``RegistryFull``."""
+        # the server's side of a simulation (and the monitor's message models) comes with the first one: the server
+        # makes its registry as it starts, before it answers /api/health (startup, issue 27)
+        from .remote import SimulationHandle
+
         with self._lock:
             self._check_room()
             self._starting += 1

@@ -38,6 +38,7 @@ from ..model.monitor import DisplayType, Log, LogKind, LogLevel, Status
 from .commands import CommandError
 from .supervisor import WorkerHub, kill, start_process
 from .trace_inbox import TraceInbox
+from .worker_settings import WorkerSettings
 
 if TYPE_CHECKING:
     from ..engine.simulation import Simulation
@@ -100,21 +101,6 @@ class Listener(Protocol):
 
     def closed(self) -> None:
         """The simulation was deleted: nothing more will come."""
-
-
-@dataclass(frozen=True)
-class WorkerSettings:
-    """What a simulation's process is given and held to (``SimulationSettings`` fills it in)."""
-
-    watchdog_s: float
-    publish_s: float
-    memory_bytes: int | None
-    build_timeout_s: float
-    grace_s: float
-    beat_s: float
-    log_entries: int
-    history_bytes: int = 256 * 1024 * 1024  # the scan history's budget (0: no history)
-    history_timeout_s: float = 30.0  # the longest the server waits for a question to the scan history
 
 
 @dataclass

@@ -92,12 +92,19 @@ class Workspace:
         if trash.is_dir():
             shutil.rmtree(trash, ignore_errors=True)
 
+    def names(self) -> list[str]:
+        """The project folders' names, sorted, without loading them."""
+        return sorted(
+            child.name
+            for child in self.root.iterdir()
+            if not child.name.startswith(".") and (child / PROJECT_FILE).is_file()
+        )
+
     def list(self) -> list[ProjectInfo]:
         """Every project folder by name; one that does not load is listed with its problems."""
         infos = []
-        for child in sorted(self.root.iterdir(), key=lambda p: p.name):
-            if child.name.startswith(".") or not (child / PROJECT_FILE).is_file():
-                continue
+        for name in self.names():
+            child = self.root / name
             try:
                 stored = self.load(child.name)
             except StorageError as error:
