@@ -142,3 +142,69 @@ def test_write_and_force_from_a_method_body_act_on_the_instance_scan_by_scan(pag
     cycles(page, 1)
     expect(values).to_have_text(["110", "110", "10"])
     expect(n).to_have_text("110")
+
+
+TANK = {
+    "name": "tank",
+    "pous": [
+        {
+            "name": "Tank",
+            "kind": "function_block",
+            "language": "st",
+            "declarations": "VAR\n    level : INT;\nEND_VAR",
+            "body": "level := level + 1;",
+            "properties": [
+                {
+                    "name": "Doubled",
+                    "type": "INT",
+                    "get": {
+                        "declarations": "VAR\n    twice : INT;\nEND_VAR",
+                        "body": "twice := level * 2;\nDoubled := twice;",
+                    },
+                    "set": {
+                        "declarations": "VAR\n    half : INT;\nEND_VAR",
+                        "body": "half := Doubled / 2;\nlevel := half;",
+                    },
+                }
+            ],
+        },
+        {
+            "name": "Main",
+            "kind": "program",
+            "language": "st",
+            "declarations": "VAR\n    t : Tank;\n    d : INT;\nEND_VAR",
+            "body": "t();\nd := t.Doubled;\nt.Doubled := d + 2;",
+        },
+    ],
+}
+
+
+def test_halted_in_a_property_accessor_its_own_variables_show_inline(page, server):
+    """Issue 25 item 6 (ON-03, ON-09): a breakpoint in a property's GET and one in its SET halt there, and each
+    accessor's body shows its own variables (its VAR and the property's value) from the call stack beside the
+    instance's, as a method's body does. By hand, scan 1: t() makes level 1; the GET computes twice = 2 and halts
+    before `Doubled := twice` (Doubled still 0); Main writes 2 + 2 through the SET, which computes half = 2 and halts
+    before `level := half` (level still 1)."""
+    store_project(server, TANK)
+    page.goto(server)
+    open_pou(page, "tank", "Tank")
+    page.get_by_role("tab", name="Methods").click()
+    page.get_by_role("list", name="Methods and properties of Tank").get_by_role("button", name="Doubled").click()
+    go_online(page, run=False)
+    for which in ("GET", "SET"):  # a breakpoint on line 2 of each accessor's body
+        page.get_by_role("textbox", name=f"Tank.Doubled.{which} body").focus()
+        page.keyboard.press("Control+End")
+        page.keyboard.press("F9")
+    expect(page.get_by_role("tab", name="Breakpoints (2)")).to_be_visible()
+    page.keyboard.press("F5")
+    debug = page.get_by_role("region", name="Debugging")
+    debug.get_by_text("Halted at TANK.DOUBLED.GET, line 2").wait_for()
+    get = page.get_by_role("textbox", name="Tank.Doubled.GET body")
+    expect(get.locator(".cm-st-value")).to_have_text(["2", "1", "0", "2"])  # twice level Doubled twice
+    expect(get.locator(".cm-halted-line")).to_have_text("Doubled0 := twice2;")
+
+    page.keyboard.press("F5")
+    debug.get_by_text("Halted at TANK.DOUBLED.SET, line 2").wait_for()
+    setter = page.get_by_role("textbox", name="Tank.Doubled.SET body")
+    expect(setter.locator(".cm-st-value")).to_have_text(["2", "4", "1", "2"])  # half Doubled level half
+    expect(get.locator(".cm-st-value")).to_have_text(["1"])  # no longer halted in the GET: only the instance's level
