@@ -228,8 +228,12 @@ function MemberEditor({
       }));
   };
   const typeField = kind === "method" ? ((member as Method).return_type ?? "") : (member as Property).type;
+  /** The line to show in `file` (a member's text), when the focus is in it: its part, and its accessor if any. */
   const focusLine = (file: string) =>
-    focus?.line != null && file.endsWith(`/${focus.part ?? "body"}`) ? { line: focus.line, seq: focus.seq } : null;
+    focus?.line != null &&
+    file.toUpperCase().endsWith(`${focus.accessor ? `.${focus.accessor}` : ""}/${focus.part ?? "body"}`.toUpperCase())
+      ? { line: focus.line, seq: focus.seq }
+      : null;
   /** A declarations text, or a body (`of`: the member whose own declarations it sees) with its values online. */
   const text = (
     label: string,
