@@ -1,6 +1,6 @@
-"""Issue 25: an FBD block ``d.DivMod`` (a METHOD of the FB instance d, CODESYS) is drawn with the method's pins - its
-inputs, its result as OUT and its VAR_OUTPUTs - and online those pins show what the call gave: 14 / 4 is 3 rest 2,
-also through a MUL fed by the method's output (2 * 3 = 6)."""
+"""Issue 25: an FBD block ``d.DivMod`` (a METHOD of the FB instance d, CODESYS; the block picker offers it) is drawn
+with the method's pins - its inputs, its result as OUT and its VAR_OUTPUTs - and online those pins show what the call
+gave: 14 / 4 is 3 rest 2, also through a MUL fed by the method's output (2 * 3 = 6)."""
 
 from __future__ import annotations
 
@@ -13,7 +13,7 @@ from .conftest import ARTIFACTS
 from .steps import go_online, open_pou, store_project
 from .test_cfc_workflow import cycles
 from .test_fbd_cfc_convert import wire
-from .test_fbd_workflow import drag_to, handle, insert_block
+from .test_fbd_workflow import drag_to, drop_from_palette, handle, insert_block
 
 pytestmark = pytest.mark.browser
 
@@ -76,6 +76,16 @@ def test_a_method_block_shows_the_methods_pins_and_their_values_online(page, ser
     block = page.locator('.fbd-node[data-node="dm"]')
     for pin in ("A", "B", "OUT", "Q", "R"):  # the method's pins, as its declaration gives them
         expect(block.get_by_text(re.compile(f"^{pin}$", re.IGNORECASE))).to_have_count(1)
+    # the block picker offers the instance's method by its call (cancelled: the network stays as stored)
+    canvas = page.locator(".fbd-network .react-flow__pane").first
+    drop_from_palette(page, "Block…", canvas, 600, 300)
+    picker = page.get_by_role("dialog", name="Insert block")
+    picker.get_by_label("Search functions and function blocks").fill("divmod")
+    expect(picker.get_by_role("option")).to_have_count(1)
+    expect(picker.get_by_role("option").locator(".ld-entry-name")).to_have_text("d.DivMod")
+    expect(picker.get_by_role("option").locator(".ld-entry-kind")).to_have_text("METHOD · user")
+    page.keyboard.press("Escape")
+    expect(picker).to_have_count(0)
     go_online(page, run=False)
     cycles(page, 1)
     page.get_by_test_id("value-oq").filter(has_text=re.compile("^3$")).wait_for()
