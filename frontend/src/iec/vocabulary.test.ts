@@ -80,6 +80,18 @@ describe("the IEC vocabulary the browser reads", () => {
     for (const word of ["step", "Transition", "Action", "From"]) {
       expect([word, classes(names, word), styles(names, word)]).toEqual([word, ["st-name"], ["variableName"]]);
     }
+    // A function block's action outside SFC (CODESYS) is headed by the keyword; `action : BOOL` declares a name.
+    const fb =
+      "FUNCTION_BLOCK F\nVAR action : BOOL; END_VAR\nACTION Reset:\naction := FALSE;\nEND_ACTION\nEND_FUNCTION_BLOCK";
+    expect(
+      stTokens(fb)
+        .filter((t) => t.text.toUpperCase() === "ACTION")
+        .map((t) => [t.text, t.style]),
+    ).toEqual([
+      ["action", "variableName"],
+      ["ACTION", "keyword"],
+      ["action", "variableName"],
+    ]);
     // A textual SFC body ends with its POU: the next POU's `step` is a name again.
     const two = `PROGRAM A\n${sfc}\nEND_PROGRAM\nPROGRAM B\nstep := 1;\nEND_PROGRAM`;
     expect(

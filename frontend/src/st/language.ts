@@ -1,7 +1,8 @@
 // IEC 61131-3 Structured Text for CodeMirror 6 as a StreamLanguage (no Lezer grammar): comments
 // ((* *), /* */ and //, block comments span lines), pragmas ({...}), strings, typed and time
 // literals (16#FF, T#5s, INT#3), numbers, keywords, elementary/standard FB types, operators. SFC's words (STEP,
-// ACTION, ...) are keywords only in a textual SFC body, which starts with INITIAL_STEP: elsewhere they are names.
+// ACTION, ...) are keywords only in a textual SFC body, which starts with INITIAL_STEP, and ACTION heading a function
+// block's action (`ACTION Reset:`): elsewhere they are names.
 // The token names are CodeMirror's standard tags, so the editor's highlight style (highlightStyle.ts) colours them.
 // Keywords and type names are the backend's (iec/vocabulary.ts).
 import { StreamLanguage, StringStream, type StreamParser } from "@codemirror/language";
@@ -15,6 +16,9 @@ export interface StState {
   /** An SFC body began (INITIAL_STEP) and its POU has not ended: SFC words are keywords (SFC_WORDS). */
   sfc: boolean;
 }
+
+/** What follows ACTION in a function block's action outside SFC (`ACTION Reset:`), where it is the keyword too. */
+const ACTION_HEAD = /^\s+[A-Za-z_][A-Za-z0-9_]*\s*:(?!=)/;
 
 /** The ends of the POUs a textual SFC body may be in: SFC words are names again after them. */
 const POU_ENDS = new Set(["END_PROGRAM", "END_FUNCTION_BLOCK"]);
@@ -69,7 +73,8 @@ function makeStParser(name: string, keywords: ReadonlySet<string>): StreamParser
         if (ATOMS.has(upper)) return "atom";
         if (upper === "INITIAL_STEP") state.sfc = true;
         else if (POU_ENDS.has(upper)) state.sfc = false;
-        if (SFC_WORDS.has(upper) && !state.sfc) return "variableName";
+        if (SFC_WORDS.has(upper) && !state.sfc && !(upper === "ACTION" && stream.match(ACTION_HEAD, false)))
+          return "variableName";
         if (keywords.has(upper)) return "keyword";
         if (TYPE_WORDS.has(upper)) return "typeName";
         return "variableName";
