@@ -165,3 +165,28 @@ def test_a_programs_method_is_picked_as_a_block_wired_and_run(page, server):
         page.get_by_test_id("value-o").filter(has_text=re.compile(f"^{total}$")).wait_for()
         expect(block.locator('[data-pin-value="out:OUT"]')).to_have_text(str(total))
         expect(block.locator('[data-pin-value="out:TWICE"]')).to_have_text(str(2 * total))
+
+
+def test_an_ld_box_of_a_programs_method_shows_every_pin_online(page, server):
+    """Issue 25 (ON-09): an LD box ``Tally.Add`` draws the method's pins from the library (K, OUT, TWICE) and online
+    shows a value on each, the unwired TWICE too. By hand: each scan adds k = 3 to Tally's total, so after scan k
+    OUT (and r) is 3k and TWICE 6k."""
+    box = {"type": "box", "id": "b1", "call": "Tally.Add", "en": True, "inputs": {"k": "3"}, "outputs": {"OUT": "r"}}
+    main = {
+        "name": "Main",
+        "kind": "program",
+        "language": "ld",
+        "declarations": "VAR r : INT; END_VAR",
+        "body": {"networks": [{"id": "n1", "elements": [{"type": "contact", "id": "c", "var": "TRUE"}, box]}]},
+    }
+    store_project(server, {"name": "ldprogmethod", "pous": [TALLY, main]})
+    page.goto(server)
+    open_pou(page, "ldprogmethod", "Main")
+    drawn = page.locator('g.ld-element[data-id="b1"]')
+    for pin in ("k", "OUT", "twice"):  # the method's pins, as the library gives them
+        expect(drawn.get_by_text(pin, exact=True)).to_have_count(1)
+    go_online(page, run=False)
+    for total in (3, 6, 9):
+        cycles(page, 1)
+        expect(drawn.locator('[data-pin-value="out:OUT"] .ld-badge')).to_have_attribute("data-value", str(total))
+        expect(drawn.locator('[data-pin-value="out:TWICE"] .ld-badge')).to_have_attribute("data-value", str(2 * total))
