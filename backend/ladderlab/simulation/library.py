@@ -85,7 +85,7 @@ def user_entries(project: Project) -> list[LibraryEntry]:
     for info in result.pous.values():
         kind = _USER_KINDS.get(info.kind)
         if kind is None:
-            if info.kind == "PROGRAM":  # a program is no box, but another POU calls its methods as ``Prog.M``
+            if info.kind == "PROGRAM" and not info.plant:  # no box, but other POUs call its methods ``Prog.M``
                 entries += [_method_entry(f"{info.name}.{name}", m) for name, m in _public_methods([info])]
             continue
         entries.append(
