@@ -1,6 +1,6 @@
-"""Issue 25: an FBD block ``d.DivMod`` (a METHOD of the FB instance d, CODESYS) is drawn with the method's pins - its
-inputs, its result as OUT and its VAR_OUTPUTs - and online those pins show what the call gave: 14 / 4 is 3 rest 2,
-also through a MUL fed by the method's output (2 * 3 = 6)."""
+"""Issue 25: an FBD block ``d.DivMod`` (a METHOD of the FB instance d, CODESYS; the block picker offers it) is drawn
+with the method's pins - its inputs, its result as OUT and its VAR_OUTPUTs - and online those pins show what the call
+gave: 14 / 4 is 3 rest 2, also through a MUL fed by the method's output (2 * 3 = 6)."""
 
 from __future__ import annotations
 
@@ -13,6 +13,7 @@ from .conftest import ARTIFACTS
 from .steps import go_online, open_pou, store_project
 from .test_cfc_workflow import cycles
 from .test_fbd_cfc_convert import wire
+from .test_fbd_workflow import drag_to, drop_from_palette, handle, insert_block
 
 pytestmark = pytest.mark.browser
 
@@ -75,6 +76,16 @@ def test_a_method_block_shows_the_methods_pins_and_their_values_online(page, ser
     block = page.locator('.fbd-node[data-node="dm"]')
     for pin in ("A", "B", "OUT", "Q", "R"):  # the method's pins, as its declaration gives them
         expect(block.get_by_text(re.compile(f"^{pin}$", re.IGNORECASE))).to_have_count(1)
+    # the block picker offers the instance's method by its call (cancelled: the network stays as stored)
+    canvas = page.locator(".fbd-network .react-flow__pane").first
+    drop_from_palette(page, "Block…", canvas, 600, 300)
+    picker = page.get_by_role("dialog", name="Insert block")
+    picker.get_by_label("Search functions and function blocks").fill("divmod")
+    expect(picker.get_by_role("option")).to_have_count(1)
+    expect(picker.get_by_role("option").locator(".ld-entry-name")).to_have_text("d.DivMod")
+    expect(picker.get_by_role("option").locator(".ld-entry-kind")).to_have_text("METHOD · user")
+    page.keyboard.press("Escape")
+    expect(picker).to_have_count(0)
     go_online(page, run=False)
     cycles(page, 1)
     page.get_by_test_id("value-oq").filter(has_text=re.compile("^3$")).wait_for()
@@ -85,3 +96,97 @@ def test_a_method_block_shows_the_methods_pins_and_their_values_online(page, ser
     expect(block.locator('[data-pin-value="out:OUT"]')).to_have_text("FALSE")  # 14 MOD 4 <> 0
     expect(page.locator(".react-flow__edge")).to_have_count(7)  # every wire drawn, to the method's pins too
     page.screenshot(path=str(ARTIFACTS / "fbd-method-block.png"))
+
+
+TALLY = {
+    "name": "Tally",
+    "kind": "program",
+    "language": "st",
+    "declarations": "VAR total : INT; END_VAR",
+    "body": "",
+    "methods": [
+        {
+            "name": "Add",
+            "return_type": "INT",
+            "declarations": "VAR_INPUT k : INT; END_VAR\nVAR_OUTPUT twice : INT; END_VAR",
+            "body": "total := total + k;\ntwice := 2 * total;\nAdd := total;",
+        }
+    ],
+}
+SUMS = {
+    "name": "progmethodblock",
+    "pous": [
+        TALLY,
+        {
+            "name": "Main",
+            "kind": "program",
+            "language": "fbd",
+            "declarations": "VAR r : INT; END_VAR",
+            "body": {
+                "networks": [
+                    {
+                        "id": "n1",
+                        "nodes": [
+                            {"type": "input", "id": "ik", "expr": "3", "pos": {"x": 20, "y": 20}},
+                            {"type": "output", "id": "o", "var": "r", "pos": {"x": 520, "y": 20}},
+                        ],
+                        "wires": [],
+                    }
+                ]
+            },
+        },
+    ],
+}
+
+
+def test_a_programs_method_is_picked_as_a_block_wired_and_run(page, server):
+    """Issue 25: the block picker offers Tally's method as ``Tally.Add`` (CODESYS: another POU calls a program's
+    method so); the block gets the method's pins (K, its result OUT, its VAR_OUTPUT TWICE), and run, each scan adds
+    3 to Tally's total: by hand the block gives 3, 6, 9 on OUT and twice that on TWICE (unwired, it shows its value as
+    an FB's unwired outputs do, ON-09)."""
+    store_project(server, SUMS)
+    page.goto(server)
+    open_pou(page, "progmethodblock", "Main")
+    editor = page.get_by_role("application", name="Function block diagram editor")
+    canvas = editor.locator(".fbd-network .react-flow__pane").first
+    insert_block(page, canvas, "Tally.Add", 260, 30)
+    block = editor.locator(".fbd-node").filter(has_text="Tally.Add")
+    node = block.get_attribute("data-node")
+    for pin in ("K", "OUT", "TWICE"):
+        expect(block.get_by_text(re.compile(f"^{pin}$", re.IGNORECASE))).to_have_count(1)
+    expect(page.get_by_role("dialog", name="Insert block")).to_have_count(0)
+    drag_to(page, handle(page, "ik", "out:OUT"), handle(page, node, "in:k"))
+    drag_to(page, handle(page, node, "out:OUT"), handle(page, "o", "in:IN"))
+    expect(editor.locator(".react-flow__edge")).to_have_count(2)
+
+    go_online(page, run=False)
+    for total in (3, 6, 9):
+        cycles(page, 1)
+        page.get_by_test_id("value-o").filter(has_text=re.compile(f"^{total}$")).wait_for()
+        expect(block.locator('[data-pin-value="out:OUT"]')).to_have_text(str(total))
+        expect(block.locator('[data-pin-value="out:TWICE"]')).to_have_text(str(2 * total))
+
+
+def test_an_ld_box_of_a_programs_method_shows_every_pin_online(page, server):
+    """Issue 25 (ON-09): an LD box ``Tally.Add`` draws the method's pins from the library (K, OUT, TWICE) and online
+    shows a value on each, the unwired TWICE too. By hand: each scan adds k = 3 to Tally's total, so after scan k
+    OUT (and r) is 3k and TWICE 6k."""
+    box = {"type": "box", "id": "b1", "call": "Tally.Add", "en": True, "inputs": {"k": "3"}, "outputs": {"OUT": "r"}}
+    main = {
+        "name": "Main",
+        "kind": "program",
+        "language": "ld",
+        "declarations": "VAR r : INT; END_VAR",
+        "body": {"networks": [{"id": "n1", "elements": [{"type": "contact", "id": "c", "var": "TRUE"}, box]}]},
+    }
+    store_project(server, {"name": "ldprogmethod", "pous": [TALLY, main]})
+    page.goto(server)
+    open_pou(page, "ldprogmethod", "Main")
+    drawn = page.locator('g.ld-element[data-id="b1"]')
+    for pin in ("k", "OUT", "twice"):  # the method's pins, as the library gives them
+        expect(drawn.get_by_text(pin, exact=True)).to_have_count(1)
+    go_online(page, run=False)
+    for total in (3, 6, 9):
+        cycles(page, 1)
+        expect(drawn.locator('[data-pin-value="out:OUT"] .ld-badge')).to_have_attribute("data-value", str(total))
+        expect(drawn.locator('[data-pin-value="out:TWICE"] .ld-badge')).to_have_attribute("data-value", str(2 * total))

@@ -193,6 +193,33 @@ def test_an_ld_box_writes_a_methods_outputs_to_the_variables_at_its_pins():
     assert (sim.read("Main.ok"), sim.read("Main.q"), sim.read("Main.wide")) == (True, 3, 2)  # 14 = 3 * 4 + 2
 
 
+def test_an_ld_method_box_probes_every_output_pin_wired_or_not():
+    """ON-09 (a value on every pin, as an FB box's outputs have): the LD box ``d.DivMod`` probes OUT, its output Q at
+    the variable q (read after the call, so the converted DINT ``wide`` would be its own) and the unwired R, EXACT and
+    CODE from the slots the call wrote. By hand, 14 / 4: OUT TRUE, Q 3, R 2, EXACT FALSE, CODE 0 (a fresh output)."""
+    from ladderlab.simulation.build import build_project
+    from ladderlab.st.project_text import source_to_project
+    from tests.ir.diagram_support import box, contact, ld_pou, rung
+
+    project, _ = source_to_project(DIVIDER, "ld")
+    divide = box("b1", "d.DivMod", en=True, a="n", b="4", outputs={"OUT": "ok", "Q": "q"})
+    declarations = "VAR d : Divider; n : INT := 14; ok : BOOL; q : INT := -1; END_VAR"
+    project.pous.append(ld_pou("Main", declarations, rung("n1", contact("k", "TRUE"), divide)))
+    result = build_project(project, "monitor")  # the variant the editor runs online: probes recorded
+    assert [d.format() for d in result.diagnostics if d.severity == "error"] == []
+    sim = result.simulation()
+    sim.cycle(1)
+    values = sim.probes("Main").values
+    assert {pin: values[f"b1.{pin}"] for pin in ("OUT", "Q", "R", "EXACT", "CODE")} == {
+        "OUT": True,
+        "Q": 3,
+        "R": 2,
+        "EXACT": False,
+        "CODE": 0,
+    }
+    assert (sim.read("Main.ok"), sim.read("Main.q")) == (True, 3)
+
+
 def test_an_ld_box_pin_that_is_no_output_of_the_method_is_refused():
     from ladderlab.simulation.build import build_project
     from ladderlab.st.project_text import source_to_project

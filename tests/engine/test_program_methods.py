@@ -437,19 +437,7 @@ def test_an_ld_box_and_an_fbd_block_call_a_program_method():
     scan +8 in all, so after scan k: Lad.r = 8k - 3, Side.f = 8k, Side.g = 8k - 3."""
     from tests.ir.diagram_support import blk, box, contact, fbd_pou, inp, ld_pou, net, out, rung
 
-    store = """
-PROGRAM Store
-VAR total : INT; END_VAR
-METHOD Put : INT
-VAR_INPUT n : INT; END_VAR
-VAR_OUTPUT was : INT; END_VAR
-was := total;
-total := total + n;
-Put := total;
-END_METHOD
-END_PROGRAM
-"""
-    project, diagnostics = source_to_project(store, "boxes")
+    project, diagnostics = source_to_project(STORE, "boxes")
     assert project is not None and diagnostics == []
     puts = box("b1", "Store.Put", en=True, n="5", outputs={"OUT": "r"})
     network = net(
@@ -466,6 +454,39 @@ END_PROGRAM
     for k in (1, 2, 3):
         sim.cycle(1)
         assert (sim.read("Lad.r"), sim.read("Side.f"), sim.read("Side.g")) == (8 * k - 3, 8 * k, 8 * k - 3)
+
+
+STORE = """
+PROGRAM Store
+VAR total : INT; END_VAR
+METHOD Put : INT
+VAR_INPUT n : INT; END_VAR
+VAR_OUTPUT was : INT; END_VAR
+was := total;
+total := total + n;
+Put := total;
+END_METHOD
+END_PROGRAM
+"""
+
+
+def test_an_fbd_method_blocks_unwired_output_has_a_value_online():
+    """ON-09 (a value on every pin, as an FB's unwired outputs have): the FBD block ``Store.Put`` with nothing wired
+    to its output ``was`` still probes it, so the editor's pin shows it. By hand, n = 3 each scan: after scan k the
+    total is 3k, Put gives 3k and ``was`` (the total before the call) 3k - 3."""
+    from tests.ir.diagram_support import blk, fbd_pou, inp, net, out
+
+    project, diagnostics = source_to_project(STORE, "unwired")
+    assert project is not None and diagnostics == []
+    network = net("n1", [inp("i", "3"), blk("a", "Store.Put"), out("o", "f")], [("i.OUT", "a.n"), ("a.OUT", "o.IN")])
+    project.pous.append(fbd_pou("Side", "VAR f : INT; END_VAR", network))
+    result = build_project(project, "monitor")  # the variant the editor runs online: probes recorded
+    assert [d.format() for d in result.diagnostics] == []
+    sim = result.simulation()
+    for k in (1, 2, 3):
+        sim.cycle(1)
+        values = sim.probes("Side").values
+        assert (values["a.OUT"], values["a.WAS"], values["o"]) == (3 * k, 3 * k - 3, 3 * k)
 
 
 def run_project(project):

@@ -162,6 +162,46 @@ def test_a_user_fb_lists_its_public_methods_own_and_inherited(client: TestClient
     assert library["Derived"]["methods"] == [twice, reset]  # its own first, then the inherited ones
 
 
+def test_a_programs_public_methods_are_functions_named_prog_dot_method(client: TestClient, motor: str) -> None:
+    """Issue 25: another POU calls a PROGRAM's method as ``Prog.M`` (CODESYS), so the box picker offers it as a
+    function of that name with the method's inputs, VAR_OUTPUTs and result; a PRIVATE one (callable only inside the
+    program) is not offered, nor is the program itself, nor a plant's (control code cannot call them)."""
+    tally = {
+        "name": "Tally",
+        "kind": "program",
+        "language": "st",
+        "declarations": "VAR total : INT; END_VAR",
+        "methods": [
+            {
+                "name": "Add",
+                "return_type": "INT",
+                "declarations": "VAR_INPUT k : INT; END_VAR\nVAR_OUTPUT twice : INT; END_VAR",
+            },
+            {"name": "Inner", "access": "PRIVATE"},
+        ],
+    }
+    response = client.put("/api/projects/motor/pous/Tally", json=tally, headers={"If-Match": motor})
+    assert response.status_code == 200, response.text
+    plant = {**tally, "name": "Tank", "kind": "plant"}  # a plant's methods run only in the plant (ST-PLANT)
+    revision = client.get("/api/projects/motor").json()["revision"]
+    response = client.put("/api/projects/motor/pous/Tank", json=plant, headers={"If-Match": revision})
+    assert response.status_code == 200, response.text
+    rows = client.get("/api/library", params={"project": "motor"}).json()
+    assert [r["name"] for r in rows if r["source"] == "user"] == ["Blinker", "Tally.Add"]
+    assert rows[-1] == {
+        "name": "Tally.Add",
+        "kind": "function",
+        "source": "user",
+        "inputs": pins(("k", "INT")),
+        "outputs": pins(("twice", "INT")),
+        "in_outs": [],
+        "extensible": False,
+        "return_type": "INT",
+        "comment": None,
+        "methods": [],
+    }
+
+
 def test_library_of_unknown_project_is_404(client: TestClient) -> None:
     response = client.get("/api/library?project=ghost")
     assert (response.status_code, detail(response)["message"]) == (404, "project 'ghost' does not exist")

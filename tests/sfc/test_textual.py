@@ -96,6 +96,38 @@ def test_the_printer_writes_textual_sfc_that_parses_back_to_the_same_tree():
     assert parse_source(print_source(tree)).ast == tree
 
 
+def test_the_printer_writes_a_function_blocks_methods_before_its_textual_sfc_body():
+    """A METHOD and a PROPERTY stand between the VAR blocks and the SFC body (the grammar's order): printed there,
+    the text parses back to the same tree, and the SFC words in the method's body stay names (``step``)."""
+    text = """FUNCTION_BLOCK Seq
+VAR step : INT; END_VAR
+METHOD Next : INT
+step := step + 1;
+Next := step;
+END_METHOD
+PROPERTY Now : INT
+GET
+Now := step;
+END_GET
+END_PROPERTY
+INITIAL_STEP S0:
+END_STEP
+STEP S1:
+END_STEP
+TRANSITION FROM S0 TO S1
+:= step > 2;
+END_TRANSITION
+END_FUNCTION_BLOCK
+"""
+    result = parse_source(text)
+    assert result.diagnostics == []
+    tree = result.ast
+    printed = print_source(tree)
+    assert "    METHOD Next : INT\n        step := step + 1;\n" in printed
+    assert printed.index("END_PROPERTY") < printed.index("INITIAL_STEP S0:")
+    assert parse_source(printed).ast == tree
+
+
 @given(sfc_bodies(named=True))
 @settings(max_examples=30)
 def test_written_textual_sfc_reads_back_as_the_same_chart(body):

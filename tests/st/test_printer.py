@@ -134,3 +134,69 @@ def test_source_prints_exactly_with_standard_indentation():
 def test_print_then_parse_gives_the_same_ast():
     tree = parse_source(SOURCE).ast
     assert parse_source(print_source(tree)).ast == tree
+
+
+OO_SOURCE = """INTERFACE IBump EXTENDS IBase
+    METHOD Bump : INT
+    VAR_INPUT
+        k : INT;
+    END_VAR
+    END_METHOD
+    PROPERTY Level : INT
+        GET
+        END_GET
+    END_PROPERTY
+END_INTERFACE
+
+FUNCTION_BLOCK ABSTRACT Counter EXTENDS Base IMPLEMENTS IBump, IOther
+VAR
+    n : INT;
+END_VAR
+    METHOD PUBLIC FINAL Bump : INT
+    VAR_INPUT
+        k : INT;
+    END_VAR
+        n := n + k;
+        Bump := n;
+    END_METHOD
+    PROPERTY PROTECTED Level : INT
+        GET
+        VAR
+            x : INT;
+        END_VAR
+            x := n;
+            Level := x;
+        END_GET
+        SET
+            n := Level;
+        END_SET
+    END_PROPERTY
+    ACTION Reset:
+        n := 0;
+    END_ACTION
+    n := n + 1;
+END_FUNCTION_BLOCK
+
+PROGRAM Main
+VAR
+    c : Counter;
+END_VAR
+    METHOD Add : INT
+    VAR_INPUT
+        k : INT;
+    END_VAR
+        Add := c.Bump(k := k);
+    END_METHOD
+    c.Reset();
+END_PROGRAM
+"""
+
+
+def test_methods_properties_actions_and_interfaces_print_exactly():
+    """IEC 61131-3 ed. 3, 6.6.5-6.6.6 (CODESYS's PROPERTY and FB ACTION): a POU's members stand between its VAR
+    blocks and its body (the grammar's order), one level in, with FINAL/ABSTRACT, EXTENDS and IMPLEMENTS in the
+    head; an INTERFACE prints its prototypes. The printed text parses back to the same tree."""
+    result = parse_source(OO_SOURCE)
+    assert result.diagnostics == []
+    assert print_source(result.ast) == OO_SOURCE
+    assert parse_source(print_source(result.ast)).ast == result.ast

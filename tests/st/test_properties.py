@@ -125,14 +125,53 @@ var_blocks = st.builds(
     st.sampled_from([[], ["CONSTANT"], ["RETAIN"]]),
     st.lists(var_decls, max_size=3),
 )
-pous = st.builds(
-    ast.Pou,
-    st.sampled_from(["PROGRAM", "FUNCTION_BLOCK"]),
+# Object orientation (IEC 61131-3 ed. 3, 6.6.5-6.6.6; CODESYS): members of a function block or a program.
+MODIFIERS = st.lists(st.sampled_from(["PUBLIC", "PRIVATE", "PROTECTED", "INTERNAL", "FINAL", "ABSTRACT"]), max_size=2)
+member_blocks = st.lists(var_blocks, max_size=1)
+member_body = st.lists(_statements(1), max_size=2)
+methods = st.builds(ast.MethodDecl, NAMES, MODIFIERS, st.none() | type_specs, member_blocks, member_body)
+accessors = st.builds(ast.AccessorDecl, st.sampled_from(["GET", "SET"]), member_blocks, member_body)
+properties = st.builds(ast.PropertyDecl, NAMES, MODIFIERS, type_specs, st.lists(accessors, max_size=2))
+# An INTERFACE's prototypes: methods and accessors without bodies.
+prototypes = st.builds(ast.MethodDecl, NAMES, st.just([]), st.none() | type_specs, member_blocks, st.just([]))
+property_prototypes = st.builds(
+    ast.PropertyDecl,
     NAMES,
-    st.none(),
-    st.lists(var_blocks, max_size=2),
-    statements,
+    st.just([]),
+    type_specs,
+    st.lists(st.builds(ast.AccessorDecl, st.sampled_from(["GET", "SET"]), st.just([]), st.just([])), max_size=2),
 )
+interfaces = st.builds(
+    ast.InterfaceDecl,
+    NAMES,
+    st.lists(NAMES, max_size=2),
+    st.lists(prototypes, max_size=2),
+    properties=st.lists(property_prototypes, max_size=2),
+)
+
+
+@st.composite
+def _pous(draw):
+    """A PROGRAM or FUNCTION_BLOCK with METHODs and PROPERTYs; a function block also with ACTIONs, FINAL or
+    ABSTRACT, EXTENDS and IMPLEMENTS (a program has none of those: the grammar's ``_program_member``)."""
+    kind = draw(st.sampled_from(["PROGRAM", "FUNCTION_BLOCK"]))
+    fb = kind == "FUNCTION_BLOCK"
+    return ast.Pou(
+        kind,
+        draw(NAMES),
+        None,
+        draw(st.lists(var_blocks, max_size=2)),
+        draw(statements),
+        methods=draw(st.lists(methods, max_size=2)),
+        properties=draw(st.lists(properties, max_size=1)),
+        actions=draw(st.lists(st.builds(ast.ActionDecl, NAMES, member_body), max_size=1)) if fb else [],
+        modifier=draw(st.sampled_from([None, "FINAL", "ABSTRACT"])) if fb else None,
+        extends=draw(st.none() | NAMES) if fb else None,
+        implements=draw(st.lists(NAMES, max_size=2)) if fb else [],
+    )
+
+
+pous = _pous()
 
 
 @given(expressions)
@@ -151,6 +190,14 @@ def test_statements_round_trip(tree):
 
 @given(st.lists(pous, min_size=1, max_size=2))
 def test_pous_round_trip(items):
+    tree = ast.Source(items)
+    result = parse_source(print_source(tree))
+    assert result.diagnostics == []
+    assert result.ast == tree
+
+
+@given(st.lists(st.one_of(pous, interfaces), min_size=1, max_size=3))
+def test_sources_with_interfaces_round_trip(items):
     tree = ast.Source(items)
     result = parse_source(print_source(tree))
     assert result.diagnostics == []

@@ -520,15 +520,14 @@ class _Network:
             self.out = saved
 
     def _method_outputs(self, node: fbd.Block, callee: Callee) -> dict[str, tuple[Var, t.Type]]:
-        """The VAR_OUTPUTs of an ``inst.M`` block that are wired: the call writes each (``q => slot``, as LD's box
-        and ST do) to a slot its consumers read, kept between scans when the block has EN (as its OUT)."""
-        used = self.used_pins.get(node.id, set())
+        """The VAR_OUTPUTs of an ``inst.M`` block: the call writes each (``q => slot``, as LD's box and ST do) to a
+        slot its consumers read and its probe shows (also unwired, as an FB's outputs: a value on every pin, ON-09),
+        kept between scans when the block has EN (as its OUT)."""
         found = {}
         for pin in callee.method_outputs():
-            if pin in used:
-                ty = callee.output_type(pin)
-                ir_type = self.ctx.ir_type(ty)
-                found[pin] = (self.ctx.hidden(f"{node.id}_{pin}", ir_type) if node.en else self.ops.temp(ir_type), ty)
+            ty = callee.output_type(pin)
+            ir_type = self.ctx.ir_type(ty)
+            found[pin] = (self.ctx.hidden(f"{node.id}_{pin}", ir_type) if node.en else self.ops.temp(ir_type), ty)
         return found
 
     def _result_context(self, node: fbd.Block) -> t.Type | None:

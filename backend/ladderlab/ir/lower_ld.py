@@ -200,7 +200,11 @@ class _Rung:
             return None
         result_text = outputs.pop("OUT", None) if not callee.is_fb else None
         written = self.ops.clean_read(result_text) if result_text is not None else None  # as in y := F(...)
-        call = check_call(self.ops, callee, instance, inputs, outputs, at, en, eno, written[1] if written else None)
+        unwired = self._unwired_method_outputs(callee, outputs)
+        wired = dict(outputs)
+        call = check_call(
+            self.ops, callee, instance, inputs, {**outputs, **unwired}, at, en, eno, written[1] if written else None
+        )
         if call is None:
             return None
         result = None if callee.is_fb else self._result(callee, call.ty, result_text, at, box.en)
@@ -213,8 +217,8 @@ class _Rung:
         if callee.is_fb:  # the outputs, read from the instance the FbCall (first statement) called
             types = fb_pins(call.fb, self.ctx)
             pins = {pin: fb_output(statements[0].instance, pin, types[pin][0]) for pin in callee.output_names()}
-        else:
-            pins = {"OUT": result}
+        else:  # a method's outputs too: the variables at their pins after the call, else the slots it wrote
+            pins = {"OUT": result, **self._read_back(wired), **{pin: slot for pin, (slot, _) in unwired.items()}}
         right = eno if eno is not None else self._bool_output(callee, call.ty, pins, at)
         if right is None:
             return None
@@ -224,6 +228,22 @@ class _Rung:
         probes += [Probe(f"{box.id}.{pin}", value, origin) for pin, value in pins.items() if value is not None]
         self.out += probes if en is None or power == TRUE else [If([(power, probes)], [], origin)]
         return right
+
+    def _unwired_method_outputs(self, callee: Callee, outputs: dict[str, str]) -> dict[str, tuple[Var, t.Type]]:
+        """A method box's VAR_OUTPUTs with no variable at their pin: the call writes each to a temporary its probe
+        reads, so the pin shows a value online as an FB's unwired outputs do (ON-09)."""
+        found = {}
+        for pin in callee.method_outputs():
+            if pin not in outputs:
+                ty = callee.output_type(pin)
+                found[pin] = (self.ops.temp(self.ctx.ir_type(ty)), ty)
+        return found
+
+    def _read_back(self, outputs: dict[str, str]) -> dict[str, Expr | None]:
+        """The variables a method box wrote at its output pins, read after the call for their probes."""
+        return {
+            pin: (read[0] if (read := self.ops.clean_read(text)) is not None else None) for pin, text in outputs.items()
+        }
 
     def _pins_allowed(self, callee: Callee, inputs: dict, outputs: dict, at: At) -> bool:
         """EN and ENO are the power flow, not operands; a function's only output is OUT."""

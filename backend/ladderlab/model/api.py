@@ -148,7 +148,8 @@ class Pin(Model):
 
 
 class LibraryEntry(Model):
-    """One function or function block the box picker offers (EN/ENO are implicit on all of them)."""
+    """One function or function block the box picker offers (EN/ENO are implicit on all of them); a program's PUBLIC
+    METHOD is a function named ``Prog.M`` (CODESYS: another POU calls it so)."""
 
     name: str
     kind: Literal["function", "function_block"]

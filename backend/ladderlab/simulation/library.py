@@ -1,4 +1,5 @@
-"""The catalogue of callable blocks: every standard function and function block, plus the project's own.
+"""The catalogue of callable blocks: every standard function and function block, plus the project's own (a
+program's PUBLIC methods among them, as functions named ``Prog.M``).
 
 Standard entries come from the ST checker's catalogue (``iec/stdlib.py``), user entries from
 the checker's resolved POU interfaces, so the box picker (``GET /api/library``) and the printed
@@ -74,8 +75,8 @@ def standard_entries() -> tuple[LibraryEntry, ...]:
 
 
 def user_entries(project: Project) -> list[LibraryEntry]:
-    """The project's functions and function blocks in project order, with their declared parameters, then those
-    of the vendor libraries it uses (st/libraries.py)."""
+    """The project's functions, function blocks and programs' methods in project order, with their declared
+    parameters, then those of the vendor libraries it uses (st/libraries.py)."""
     own = {p.name.upper() for p in project.pous}
     project = with_libraries(project)
     result = check_st(project)
@@ -84,6 +85,8 @@ def user_entries(project: Project) -> list[LibraryEntry]:
     for info in result.pous.values():
         kind = _USER_KINDS.get(info.kind)
         if kind is None:
+            if info.kind == "PROGRAM" and not info.plant:  # no box, but other POUs call its methods ``Prog.M``
+                entries += [_method_entry(f"{info.name}.{name}", m) for name, m in _public_methods([info])]
             continue
         entries.append(
             LibraryEntry(
@@ -103,24 +106,31 @@ def user_entries(project: Project) -> list[LibraryEntry]:
 
 
 def _methods(fb: PouInfo) -> list[LibraryEntry]:
-    """``fb``'s PUBLIC methods, its own then inherited ones not overridden (a PROPERTY's accessors left out), as an
-    FBD block ``inst.M`` calls them: inputs, VAR_OUTPUTs and the result as OUT."""
+    """``fb``'s PUBLIC methods, its own then inherited ones not overridden, as an FBD block ``inst.M`` calls them."""
+    return [_method_entry(name, method) for name, method in _public_methods(fb.lineage())]
+
+
+def _public_methods(lineage: list[PouInfo]) -> list[tuple[str, PouInfo]]:
+    """The PUBLIC methods of a POU and its ancestors (``lineage``, the POU first), each once: the first one found
+    (an override before what it overrides), by its name as written; a PROPERTY's accessors left out."""
     found: dict[str, tuple[str, PouInfo]] = {}  # upper-case name -> (name as written, the method)
-    for owner in fb.lineage():
+    for owner in lineage:
         for key, method in owner.methods.items():
             if key not in found and "." not in key and method.method is not None and method.method.access == "PUBLIC":
                 found[key] = method.method.name, method
-    return [
-        LibraryEntry(
-            name=name,
-            kind="function",
-            source="user",
-            inputs=[_user_pin(s) for s in method.parameters("VAR_INPUT")],
-            outputs=[_user_pin(s) for s in method.parameters("VAR_OUTPUT")],
-            in_outs=[_user_pin(s) for s in method.parameters("VAR_IN_OUT")],
-            extensible=False,
-            return_type=print_type(method.return_spec) if method.return_spec is not None else None,
-            comment=None,
-        )
-        for name, method in found.values()
-    ]
+    return list(found.values())
+
+
+def _method_entry(name: str, method: PouInfo) -> LibraryEntry:
+    """A method as a box calls it: its inputs, VAR_OUTPUTs and the result as OUT."""
+    return LibraryEntry(
+        name=name,
+        kind="function",
+        source="user",
+        inputs=[_user_pin(s) for s in method.parameters("VAR_INPUT")],
+        outputs=[_user_pin(s) for s in method.parameters("VAR_OUTPUT")],
+        in_outs=[_user_pin(s) for s in method.parameters("VAR_IN_OUT")],
+        extensible=False,
+        return_type=print_type(method.return_spec) if method.return_spec is not None else None,
+        comment=None,
+    )

@@ -57,6 +57,9 @@ class ParseResult:
 
 
 _KEYWORD_RE = re.compile(r'^_?[A-Z_]+: "([A-Z_]+)"i$', re.MULTILINE)
+# Textual SFC's words, keywords only inside an SFC body, which starts with INITIAL_STEP (OSCAT names variables
+# step); INITIAL_STEP and END_* stay reserved. The editors' highlighter reads them so too (st/vocabulary.py).
+SFC_WORDS = frozenset({"STEP", "TRANSITION", "FROM", "PRIORITY", "ACTION"})
 # Keywords that only mean something in one spot (after a type, in a RESOURCE): real libraries use them as names.
 # The operator words are also the standard functions AND(...), MOD(...), so they may stand where a name does.
 _SOFT_KEYWORDS = {
@@ -75,12 +78,7 @@ _SOFT_KEYWORDS = {
     "XOR",
     "NOT",
     "MOD",
-    # textual SFC's words inside an SFC body (OSCAT names variables step); INITIAL_STEP and END_* stay reserved
-    "STEP",
-    "TRANSITION",
-    "FROM",
-    "PRIORITY",
-    "ACTION",
+    *SFC_WORDS,
     # object orientation's words (IEC 61131-3 ed. 3): reserved there, but edition 2 programs use them as names
     "METHOD",
     "PUBLIC",

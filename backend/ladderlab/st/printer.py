@@ -278,11 +278,57 @@ def _typeprint_statements(block: ast.TypeBlock) -> str:
 
 
 def print_pou(pou: ast.Pou) -> str:
-    head = f"{pou.kind} {pou.name}"
+    head = " ".join([pou.kind, *([pou.modifier] if pou.modifier else []), pou.name])
     if pou.return_type is not None:
         head += f" : {print_type(pou.return_type)}"
+    if pou.extends is not None:
+        head += f" EXTENDS {pou.extends}"
+    if pou.implements:
+        head += f" IMPLEMENTS {', '.join(pou.implements)}"
+    # Members stand between the VAR blocks and the body (the grammar's order); the tree keeps each kind in its own
+    # list, so they print methods, properties, then actions, and parse back to the same lists.
+    members = [*map(_method, pou.methods), *map(_property, pou.properties), *map(_action, pou.actions)]
     body = print_sfc(pou.sfc, 1) if pou.sfc is not None else print_statements(pou.body, 1)
-    return f"{head}\n{print_declarations(pou.var_blocks)}{body}END_{pou.kind}\n"
+    return f"{head}\n{print_declarations(pou.var_blocks)}{''.join(members)}{body}END_{pou.kind}\n"
+
+
+def _member_head(word: str, modifiers: list[str], name: str) -> str:
+    return " ".join([word, *modifiers, name])
+
+
+def _method(method: ast.MethodDecl, level: int = 1) -> str:
+    """``METHOD [modifiers] name [: type]``, its VAR blocks and body (none in an INTERFACE's prototype)."""
+    head = _member_head("METHOD", method.modifiers, method.name)
+    if method.return_type is not None:
+        head += f" : {print_type(method.return_type, level)}"
+    inner = _blocks_and_body(method.var_blocks, method.body, level)
+    return f"{INDENT * level}{head}\n{inner}{INDENT * level}END_METHOD\n"
+
+
+def _property(prop: ast.PropertyDecl, level: int = 1) -> str:
+    """``PROPERTY [modifiers] name : type`` with its GET / SET accessors (bodiless in an INTERFACE)."""
+    head = f"{_member_head('PROPERTY', prop.modifiers, prop.name)} : {print_type(prop.type, level)}"
+    pad = INDENT * (level + 1)
+    accessors = "".join(
+        f"{pad}{a.kind}\n{_blocks_and_body(a.var_blocks, a.body, level + 1)}{pad}END_{a.kind}\n" for a in prop.accessors
+    )
+    return f"{INDENT * level}{head}\n{accessors}{INDENT * level}END_PROPERTY\n"
+
+
+def _action(action: ast.ActionDecl) -> str:
+    """A function block's ``ACTION name:`` outside SFC."""
+    return f"{INDENT}ACTION {action.name}:\n{print_statements(action.body, 2)}{INDENT}END_ACTION\n"
+
+
+def _blocks_and_body(blocks: list[ast.VarBlock], body: list[ast.Stmt], level: int) -> str:
+    return "".join(print_varprint_statements(b, level) for b in blocks) + print_statements(body, level + 1)
+
+
+def print_interface(interface: ast.InterfaceDecl) -> str:
+    """``INTERFACE name [EXTENDS i, ...]``: its method and property prototypes."""
+    extends = f" EXTENDS {', '.join(interface.extends)}" if interface.extends else ""
+    members = [*map(_method, interface.methods), *map(_property, interface.properties)]
+    return f"INTERFACE {interface.name}{extends}\n{''.join(members)}END_INTERFACE\n"
 
 
 def print_sfc(sfc: ast.Sfc, level: int = 0) -> str:
@@ -383,6 +429,8 @@ def print_source(source: ast.Source) -> str:
             parts.append(_typeprint_statements(item))
         elif isinstance(item, ast.VarBlock):
             parts.append(print_varprint_statements(item))
+        elif isinstance(item, ast.InterfaceDecl):
+            parts.append(print_interface(item))
         else:
             parts.append(print_configuration(item))
     return "\n".join(parts)

@@ -22,7 +22,7 @@ from ..iec.values import f32
 from ..model.fbd import EXECUTED_ELEMENTS
 from . import types as t
 from .libraries import library_catalogue
-from .parser import TEST_KEYWORDS, grammar_keywords, literal_patterns
+from .parser import SFC_WORDS, TEST_KEYWORDS, grammar_keywords, literal_patterns
 from .testfile import SIGNATURES
 
 #: Values the browser must write exactly as the engine does: (type, value in the value model).
@@ -131,6 +131,7 @@ def vocabulary() -> dict[str, Any]:
         "libraries": library_catalogue(),
         "cfc_executed_elements": list(EXECUTED_ELEMENTS),
         "keywords": sorted(grammar_keywords() - TEST_KEYWORDS),
+        "sfc_words": sorted(SFC_WORDS),
         "test_keywords": sorted(TEST_KEYWORDS),
         "test_verbs": [{"name": verb, "signature": signature} for verb, signature in SIGNATURES.items()],
         "literals": [

@@ -18,5 +18,7 @@ export function revealPlace(target: Place): void {
   const method = named(target.pou) ? null : methodPlace(target.pou); // a method's code: its FB's Methods tab
   const pou = named(method?.pou ?? target.pou) ?? target.pou;
   ws.openPou(pou);
-  panelsStore.getState().reveal({ ...target, pou, part: "body", member: method?.member ?? null });
+  panelsStore
+    .getState()
+    .reveal({ ...target, pou, part: "body", member: method?.member ?? null, accessor: method?.accessor ?? null });
 }

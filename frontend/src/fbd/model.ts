@@ -128,6 +128,17 @@ export function methodEntry(call: string, lookup: Lookup, symbols: readonly Symb
   return (fb ? lookup(fb) : undefined)?.methods?.find((m) => m.name.toUpperCase() === method);
 }
 
+/**
+ * What the block picker offers beside the library: `inst.M` for each PUBLIC method of every instance in `symbols` of
+ * a function block that has methods (CODESYS), as a function entry named by the instance.
+ */
+export function instanceMethodEntries(symbols: readonly SymbolInfo[], lookup: Lookup): LibraryEntry[] {
+  return symbols.flatMap((s) => {
+    const fb = lookup(s.type);
+    return fb?.kind === "function_block" ? (fb.methods ?? []).map((m) => ({ ...m, name: `${s.name}.${m.name}` })) : [];
+  });
+}
+
 /** What a block calls: a function or function block of the library, else a method (`inst.M`). */
 export function blockEntry(call: string, lookup: Lookup, symbols: readonly SymbolInfo[]): LibraryEntry | undefined {
   return lookup(call) ?? methodEntry(call, lookup, symbols);

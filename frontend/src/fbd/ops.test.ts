@@ -9,7 +9,16 @@ import { clipOf, parseClip, pasteClip, PASTE_OFFSET, serializeClip } from "./cli
 import { arithmetic, bodyOf, lookup, SYMBOLS, wire } from "./fixtures";
 import type { LibraryEntry } from "../generated/api";
 import { plainSymbol } from "../store/project";
-import { methodEntry, nodePins, nodesOf, wiresOf, type Block, type FbdBody, type FbdNetwork } from "./model";
+import {
+  instanceMethodEntries,
+  methodEntry,
+  nodePins,
+  nodesOf,
+  wiresOf,
+  type Block,
+  type FbdBody,
+  type FbdNetwork,
+} from "./model";
 import * as ops from "./ops";
 import { moveInOrder } from "./order";
 
@@ -165,6 +174,12 @@ describe("pins", () => {
     expect(pins.outputs.map((p) => `${p.name}:${p.type}`)).toEqual(["OUT:BOOL", "q:INT", "r:INT"]);
     expect(methodEntry("d.Nope", withDivider, symbols)).toBeUndefined();
     expect(methodEntry("var1.DivMod", withDivider, symbols)).toBeUndefined(); // an INT has no methods
+    // the block picker offers the method of each instance by its call, with the method's pins
+    const offered = instanceMethodEntries([...symbols, plainSymbol("d2", "divider")], withDivider);
+    expect(offered.map((e) => [e.name, e.kind, e.inputs.map((p) => p.name), e.return_type])).toEqual([
+      ["d.DivMod", "function", ["a", "b"], "BOOL"],
+      ["d2.DivMod", "function", ["a", "b"], "BOOL"],
+    ]);
   });
 
   it("toggles negation bubbles and exclusive edge markers; no edges on outputs", () => {

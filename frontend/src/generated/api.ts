@@ -1965,7 +1965,8 @@ export interface components {
     };
     /**
      * LibraryEntry
-     * @description One function or function block the box picker offers (EN/ENO are implicit on all of them).
+     * @description One function or function block the box picker offers (EN/ENO are implicit on all of them); a program's PUBLIC
+     *     METHOD is a function named ``Prog.M`` (CODESYS: another POU calls it so).
      */
     LibraryEntry: {
       /** Comment */

@@ -2789,6 +2789,7 @@ export const IEC = {
       rule: "a hexadecimal number is 16# then the digits 0-9 and A-F",
     },
   ],
+  sfc_words: ["ACTION", "FROM", "PRIORITY", "STEP", "TRANSITION"],
   strings: ["STRING", "WSTRING"],
   test_keywords: [
     "END_SETUP",

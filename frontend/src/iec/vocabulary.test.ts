@@ -7,7 +7,7 @@ import { FAMILY_DEFAULT } from "../ld/editor/declare";
 import { formatValue } from "../online/values";
 import { tokenize as stTokens } from "../st/language";
 import { highlightLines } from "../stview/highlight";
-import { DECLARABLE_TYPES, ELEMENTARY, FAMILIES, KEYWORDS, TYPE_WORDS, widens } from "./vocabulary";
+import { DECLARABLE_TYPES, ELEMENTARY, FAMILIES, KEYWORDS, SFC_WORDS, TYPE_WORDS, widens } from "./vocabulary";
 
 const SRC = join(__dirname, "..");
 
@@ -47,7 +47,7 @@ describe("the IEC vocabulary the browser reads", () => {
   });
 
   it("highlights the backend's keywords and types the same in the ST editor and the read-only view", () => {
-    for (const word of KEYWORDS) {
+    for (const word of [...KEYWORDS].filter((w) => !SFC_WORDS.has(w))) {
       const kind = viewClass(word);
       const style = stTokens(word)[0]!.style;
       expect([word, kind, style]).toEqual([word, "st-keyword", ["TRUE", "FALSE"].includes(word) ? "atom" : "keyword"]);
@@ -60,6 +60,48 @@ describe("the IEC vocabulary the browser reads", () => {
     for (const word of ["CHAR", "WCHAR"]) {
       expect([word, viewClass(word), stTokens(word)[0]!.style]).toEqual([word, "st-name", "variableName"]);
     }
+  });
+
+  it("highlights SFC's words as keywords only in an SFC body, from its INITIAL_STEP to its POU's end", () => {
+    // docs/st.md: SFC words stay usable as names (OSCAT's `step`); the grammar's SFC body starts with INITIAL_STEP
+    expect([...SFC_WORDS].sort()).toEqual(["ACTION", "FROM", "PRIORITY", "STEP", "TRANSITION"]);
+    for (const word of SFC_WORDS) expect(KEYWORDS).toContain(word);
+    const sfc = "INITIAL_STEP s0: END_STEP\nSTEP s1: END_STEP\nTRANSITION FROM s0 TO s1 := TRUE; END_TRANSITION";
+    const classes = (text: string, word: string) => [
+      ...new Set(highlightLines(text).flatMap((line) => line.filter((t) => t.text === word).map((t) => t.className))),
+    ];
+    const styles = (text: string, word: string) => [
+      ...new Set(stTokens(text).flatMap((t) => (t.text === word ? [t.style] : []))),
+    ];
+    for (const word of ["STEP", "TRANSITION", "FROM"]) {
+      expect([word, classes(sfc, word), styles(sfc, word)]).toEqual([word, ["st-keyword"], ["keyword"]]);
+    }
+    const names = "step := step + 1;\nIF Transition THEN Action := From; END_IF;";
+    for (const word of ["step", "Transition", "Action", "From"]) {
+      expect([word, classes(names, word), styles(names, word)]).toEqual([word, ["st-name"], ["variableName"]]);
+    }
+    // A function block's action outside SFC (CODESYS) is headed by the keyword; `action : BOOL` declares a name.
+    const fb =
+      "FUNCTION_BLOCK F\nVAR action : BOOL; END_VAR\nACTION Reset:\naction := FALSE;\nEND_ACTION\nEND_FUNCTION_BLOCK";
+    expect(
+      stTokens(fb)
+        .filter((t) => t.text.toUpperCase() === "ACTION")
+        .map((t) => [t.text, t.style]),
+    ).toEqual([
+      ["action", "variableName"],
+      ["ACTION", "keyword"],
+      ["action", "variableName"],
+    ]);
+    // A textual SFC body ends with its POU: the next POU's `step` is a name again.
+    const two = `PROGRAM A\n${sfc}\nEND_PROGRAM\nPROGRAM B\nstep := 1;\nEND_PROGRAM`;
+    expect(
+      stTokens(two)
+        .filter((t) => t.text.toUpperCase() === "STEP")
+        .map((t) => [t.text, t.style]),
+    ).toEqual([
+      ["STEP", "keyword"],
+      ["step", "variableName"],
+    ]);
   });
 
   it("declares a variable on a generic pin with a member of the pin's family, for every family", () => {

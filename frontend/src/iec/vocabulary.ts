@@ -26,6 +26,9 @@ export const STANDARD_FBS: readonly string[] = IEC.function_blocks.map((fb) => f
 
 /** The keywords of the ST grammar, upper case (TRUE and FALSE among them). */
 export const KEYWORDS: ReadonlySet<string> = new Set(IEC.keywords);
+/** Textual SFC's words (STEP, TRANSITION, ACTION, ...): keywords only inside an SFC body, which starts with
+ * INITIAL_STEP; elsewhere names (OSCAT's `step`), as the backend's grammar reads them. */
+export const SFC_WORDS: ReadonlySet<string> = new Set(IEC.sfc_words);
 /** What a test file (tests/<name>.st) adds to the keywords: TEST, SETUP, MOCK, ... and the test verbs. */
 export const TEST_FILE_KEYWORDS: ReadonlySet<string> = new Set([
   ...IEC.keywords,

@@ -2,9 +2,9 @@
 // and properties listed, their access (PUBLIC/PRIVATE/PROTECTED/INTERNAL), FINAL and ABSTRACT set (an FB's only:
 // nothing extends a program),
 // added, renamed (with every call, previewed: the tree's rename dialog) and deleted; a method's result type, declarations and body, and a property's type and GET / SET
-// texts, edited in the ST editor with the live check's diagnostics; breakpoints in a method's body; online, the
-// FB instance's variables a body names inline, live (writable as in the FB body), and a method's own variables'
-// values while the scan is halted in a call of it (read only).
+// texts, edited in the ST editor with the live check's diagnostics; breakpoints in a method's or accessor's body;
+// online, the FB instance's variables a body names inline, live (writable as in the FB body), and a method's or
+// accessor's own variables' values while the scan is halted in a call of it (read only).
 import { useState, type FormEvent, type ReactNode } from "react";
 import type { Accessor, Method, Pou, Property } from "../generated/api";
 import { useTextDebug } from "../breakpointPlaces/useTextDebug";
@@ -228,9 +228,12 @@ function MemberEditor({
       }));
   };
   const typeField = kind === "method" ? ((member as Method).return_type ?? "") : (member as Property).type;
-  const debug = useTextDebug(`${pou.name}.${member.name}`); // the engine's POU of a method: FB.M
+  /** The line to show in `file` (a member's text), when the focus is in it: its part, and its accessor if any. */
   const focusLine = (file: string) =>
-    focus?.line != null && file.endsWith(`/${focus.part ?? "body"}`) ? { line: focus.line, seq: focus.seq } : null;
+    focus?.line != null &&
+    file.toUpperCase().endsWith(`${focus.accessor ? `.${focus.accessor}` : ""}/${focus.part ?? "body"}`.toUpperCase())
+      ? { line: focus.line, seq: focus.seq }
+      : null;
   /** A declarations text, or a body (`of`: the member whose own declarations it sees) with its values online. */
   const text = (
     label: string,
@@ -247,7 +250,6 @@ function MemberEditor({
         scope={scope}
         member={{ ...of, file }}
         editor={editor}
-        debug={of.call ? debug : undefined}
         instancePicker={instancePicker}
         focusLine={focusLine(file)}
       />
@@ -363,7 +365,11 @@ function MemberEditor({
                     accessor.body ?? "",
                     memberFile(pou.name, member.name, "body", which),
                     update("body"),
-                    { name: member.name, declarations: accessor.declarations ?? "", call: null },
+                    {
+                      name: member.name,
+                      declarations: accessor.declarations ?? "",
+                      call: `${pou.name}.${member.name}.${which.toUpperCase()}`,
+                    },
                   ),
                 ]
               : [];
@@ -374,14 +380,13 @@ function MemberEditor({
 
 /**
  * A method's or accessor's body: online, its FB instance's variables inline (the instance chosen as for the FB body,
- * or the halted call's), and a method's own while halted in it (st/useStOnline.tsx, the FB body's function).
+ * or the halted call's), and its own while halted in it (st/useStOnline.tsx, the FB body's function).
  */
 function MemberBody({
   pou,
   scope,
   member,
   editor,
-  debug,
   focusLine,
   instancePicker,
 }: {
@@ -389,11 +394,11 @@ function MemberBody({
   scope: Scope;
   member: StMember;
   editor: Omit<Parameters<typeof StEditor>[0], "online" | "debug" | "focusLine">;
-  debug: Parameters<typeof StEditor>[0]["debug"];
   focusLine: { line: number; seq: number } | null;
   instancePicker?: ReactNode;
 }) {
   const online = useStOnline(pou, editor.text, scope, member);
+  const debug = useTextDebug(member.call);
   return (
     <div
       style={{

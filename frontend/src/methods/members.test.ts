@@ -85,17 +85,20 @@ describe("methods and properties of a function block", () => {
 describe("places in a member's texts", () => {
   it("a diagnostic in a method or accessor text reveals the member in its FB's Methods tab", () => {
     const inMethod = { code: "ST-TYPE", message: "", file: "Counter.Scaled/body", pou: "Counter.Scaled", line: 2 };
-    expect(focusOf(inMethod)).toEqual({ pou: "Counter", member: "Scaled", line: 2, part: "body" });
+    expect(focusOf(inMethod)).toEqual({ pou: "Counter", member: "Scaled", accessor: null, line: 2, part: "body" });
     const inGet = { code: "X", message: "", file: "Counter.Level.GET/declarations", pou: "Counter.Level.GET", line: 1 };
-    expect(focusOf(inGet)).toEqual({ pou: "Counter", member: "Level", line: 1, part: "declarations" });
+    expect(focusOf(inGet)).toEqual({ pou: "Counter", member: "Level", accessor: "GET", line: 1, part: "declarations" });
+    const inSet = { code: "X", message: "", file: "Counter.Level.SET/body", pou: "Counter.Level.SET", line: 3 };
+    expect(focusOf(inSet)).toMatchObject({ member: "Level", accessor: "SET", part: "body" });
     expect(focusOf({ code: "X", message: "", file: "Main/body", pou: "Main", line: 3 })).toMatchObject({
       pou: "Main",
       part: "body",
     });
   });
 
-  it("a halt in a method, named as the engine names it, is its FB and the member", () => {
-    expect(methodPlace("COUNTER.SCALED")).toEqual({ pou: "COUNTER", member: "SCALED" });
+  it("a halt in a method or accessor, named as the engine names it, is its FB, the member and the accessor", () => {
+    expect(methodPlace("COUNTER.SCALED")).toEqual({ pou: "COUNTER", member: "SCALED", accessor: null });
+    expect(methodPlace("TANK.LEVEL.SET")).toEqual({ pou: "TANK", member: "LEVEL", accessor: "SET" });
     expect(methodPlace("MAIN")).toBeNull();
   });
 });

@@ -1,7 +1,8 @@
 // Autocomplete for ST: the POU's variables and the globals (from the symbols endpoint), standard
 // and user functions and FB types (from /api/library). Calls insert a formal-parameter template
 // (`TON1(IN := , PT := , Q => , ET => );`); an FB instance variable offers the call of its type.
-// After `inst.` or `s.` it offers the members of that variable's type (FB pins, struct fields).
+// After `inst.` or `s.` it offers the members of that variable's type (FB pins, struct fields) and an FB instance's
+// methods; after a program's name, its methods (`Prog.M(...)`, CODESYS).
 // Keywords and elementary types come last, from the backend's vocabulary (iec/vocabulary.ts).
 import type { Completion, CompletionContext, CompletionResult } from "@codemirror/autocomplete";
 import type { LibraryEntry, SymbolInfo } from "../generated/api";
@@ -44,7 +45,7 @@ export function stCompletions(symbols: SymbolInfo[], library: LibraryEntry[]): C
         };
   });
   const functions = library
-    .filter((e) => e.kind === "function")
+    .filter((e) => e.kind === "function" && !e.name.includes(".")) // a program's `Prog.M`: offered after `Prog.`
     .map((e): Completion => ({
       label: e.name,
       type: "function",
@@ -69,20 +70,49 @@ const LANGUAGE_WORDS: readonly Completion[] = [
   })),
 ];
 
-/** The members offered after `chain.` (e.g. ["Timer"] -> IN, PT, Q, ET); null when the chain has no members. */
+/**
+ * What may follow `chain.` (e.g. ["Timer"] -> IN, PT, Q, ET): the members of its type, then the methods it calls - a
+ * function block instance's PUBLIC methods, or a program's (`Prog.M`); null when the chain has neither.
+ */
 export function memberCompletions(chain: readonly string[], scope: Scope): Completion[] | null {
   const type = typeOfChain(chain, scope);
   const members = type === null ? null : membersOf(type, scope);
+  const methods = methodsAfter(chain, type, scope);
+  if (members === null && methods.length === 0) return null;
+  const owner = type ?? chain[0]!;
   // Boosted in declaration order, so the list reads like the FB's interface (inputs first), not alphabetically.
-  return (
-    members?.map((m, i) => ({
+  const boost = (i: number) => -Math.min(i, 99);
+  return [
+    ...(members ?? []).map((m, i) => ({
       label: m.name,
       type: "property",
       detail: m.type,
       info: `${m.kind === "field" ? "field of" : m.kind + " of"} ${type}`,
-      boost: -Math.min(i, 99),
-    })) ?? null
-  );
+      boost: boost(i),
+    })),
+    ...methods.map((m, i) => ({
+      label: m.name,
+      type: "method",
+      detail: signature(m),
+      apply: callTemplate(m.name, m),
+      info: `METHOD of ${owner}`,
+      boost: boost((members?.length ?? 0) + i),
+    })),
+  ];
+}
+
+/** The methods `chain.` may call (named without their owner): those of its function block type, else, after a
+ * program's name alone, the program's (library entries `Prog.M`). */
+function methodsAfter(chain: readonly string[], type: string | null, scope: Scope): readonly LibraryEntry[] {
+  if (type !== null) {
+    const upper = type.trim().toUpperCase();
+    return scope.library.find((e) => e.kind === "function_block" && e.name.toUpperCase() === upper)?.methods ?? [];
+  }
+  if (chain.length !== 1) return [];
+  const prefix = `${chain[0]!.toUpperCase()}.`;
+  return scope.library
+    .filter((e) => e.kind === "function" && e.name.toUpperCase().startsWith(prefix))
+    .map((e) => ({ ...e, name: e.name.slice(prefix.length) }));
 }
 
 /** What the editor completes from: the words of the POU and the members of a chain. */

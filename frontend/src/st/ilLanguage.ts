@@ -67,8 +67,8 @@ interface IlState extends StState {
 
 export const ilParser: StreamParser<IlState> = {
   name: "iec-il",
-  startState: () => ({ open: null, operator: true }),
-  copyState: (s) => ({ open: s.open, operator: s.operator }),
+  startState: () => ({ open: null, sfc: false, operator: true }),
+  copyState: (s) => ({ open: s.open, sfc: s.sfc, operator: s.operator }),
   token(stream, state) {
     if (stream.sol()) state.operator = true;
     if (!state.open && state.operator) {

@@ -52,6 +52,17 @@ END_IF;`;
 const at = (o: Occurrence) => `${o.text}@${o.from}-${o.to} ${o.path} ${o.type}`;
 
 describe("variable occurrences (issue 9: ST online values inline)", () => {
+  it("shows a variable named like an SFC word (OSCAT's step) outside an SFC body", () => {
+    const named: Scope = { ...scope, symbols: [symbol("step", "INT"), symbol("Action", "BOOL")] };
+    const text = "Step := step + 1;\nIF Action THEN step := 0; END_IF;";
+    expect(variableOccurrences(text, named, "MAIN").map(at)).toEqual([
+      "Step@0-4 MAIN.STEP INT",
+      "step@8-12 MAIN.STEP INT",
+      "Action@21-27 MAIN.ACTION BOOL",
+      "step@33-37 MAIN.STEP INT",
+    ]);
+  });
+
   it("finds each variable with a value, as a path of the instance; skips FBs, whole arrays, formal names, comments and strings", () => {
     const found = variableOccurrences(BODY, scope, "MAIN");
     const offset = (needle: string, nth = 0) =>

@@ -1,17 +1,27 @@
 // IEC 61131-3 Structured Text for CodeMirror 6 as a StreamLanguage (no Lezer grammar): comments
 // ((* *), /* */ and //, block comments span lines), pragmas ({...}), strings, typed and time
-// literals (16#FF, T#5s, INT#3), numbers, keywords, elementary/standard FB types, operators.
+// literals (16#FF, T#5s, INT#3), numbers, keywords, elementary/standard FB types, operators. SFC's words (STEP,
+// ACTION, ...) are keywords only in a textual SFC body, which starts with INITIAL_STEP, and ACTION heading a function
+// block's action (`ACTION Reset:`): elsewhere they are names.
 // The token names are CodeMirror's standard tags, so the editor's highlight style (highlightStyle.ts) colours them.
 // Keywords and type names are the backend's (iec/vocabulary.ts).
 import { StreamLanguage, StringStream, type StreamParser } from "@codemirror/language";
-import { KEYWORDS, TEST_FILE_KEYWORDS, TYPE_WORDS } from "../iec/vocabulary";
+import { KEYWORDS, SFC_WORDS, TEST_FILE_KEYWORDS, TYPE_WORDS } from "../iec/vocabulary";
 
 const ATOMS = new Set(["TRUE", "FALSE"]);
 
-/** Inside a block comment or a pragma that continues on the next line. */
+/** Inside a block comment or a pragma that continues on the next line; inside a textual SFC body. */
 export interface StState {
   open: null | "paren" | "slash" | "pragma";
+  /** An SFC body began (INITIAL_STEP) and its POU has not ended: SFC words are keywords (SFC_WORDS). */
+  sfc: boolean;
 }
+
+/** What follows ACTION in a function block's action outside SFC (`ACTION Reset:`), where it is the keyword too. */
+const ACTION_HEAD = /^\s+[A-Za-z_][A-Za-z0-9_]*\s*:(?!=)/;
+
+/** The ends of the POUs a textual SFC body may be in: SFC words are names again after them. */
+const POU_ENDS = new Set(["END_PROGRAM", "END_FUNCTION_BLOCK"]);
 
 const CLOSER = { paren: "*)", slash: "*/", pragma: "}" } as const;
 
@@ -31,8 +41,8 @@ function skipTo(stream: StringStream, closer: string): boolean {
 function makeStParser(name: string, keywords: ReadonlySet<string>): StreamParser<StState> {
   return {
     name,
-    startState: () => ({ open: null }),
-    copyState: (s) => ({ open: s.open }),
+    startState: () => ({ open: null, sfc: false }),
+    copyState: (s) => ({ open: s.open, sfc: s.sfc }),
     token(stream, state) {
       if (state.open) {
         const kind = state.open;
@@ -61,6 +71,10 @@ function makeStParser(name: string, keywords: ReadonlySet<string>): StreamParser
       if (word) {
         const upper = word[0].toUpperCase();
         if (ATOMS.has(upper)) return "atom";
+        if (upper === "INITIAL_STEP") state.sfc = true;
+        else if (POU_ENDS.has(upper)) state.sfc = false;
+        if (SFC_WORDS.has(upper) && !state.sfc && !(upper === "ACTION" && stream.match(ACTION_HEAD, false)))
+          return "variableName";
         if (keywords.has(upper)) return "keyword";
         if (TYPE_WORDS.has(upper)) return "typeName";
         return "variableName";

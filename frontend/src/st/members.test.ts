@@ -178,6 +178,61 @@ describe("the working copy's declarations (issue 9: completion before a save)", 
   });
 });
 
+describe("methods after `inst.` and `Prog.` (issue 25: CODESYS calls a program's method as Prog.M)", () => {
+  const fn = (name: string, inputs: string[], outputs: string[], result: string | null): LibraryEntry => ({
+    name,
+    kind: "function",
+    source: "user",
+    comment: null,
+    extensible: false,
+    inputs: inputs.map((p) => pin(p, "INT")),
+    in_outs: [],
+    outputs: outputs.map((p) => pin(p, "INT")),
+    return_type: result,
+  });
+  const library = [
+    { ...COUNTER, methods: [fn("Reset", [], [], null)] },
+    fn("Tally.Add", ["k"], ["twice"], "INT"),
+    fn("Tally.Clear", [], [], null),
+    fn("Tallyho.Other", [], [], null), // another program's, whose name only starts like it
+    ABS,
+  ];
+  const methodScope: Scope = { symbols: [symbol("C1", "Counter")], library, structs: new Map() };
+  const source = stCompletionSource(() => ({
+    options: stCompletions([...methodScope.symbols], library),
+    members: (chain) => memberCompletions(chain, methodScope),
+  }));
+  const at = (doc: string) => source(new CompletionContext(EditorState.create({ doc }), doc.length, false));
+
+  it("offers a program's methods after its name, each inserting its formal call", () => {
+    const result = at("x := tally.");
+    expect(result?.from).toBe(11);
+    expect(result?.options.map((o) => [o.label, o.type, o.detail, o.apply, o.info])).toEqual([
+      ["Add", "method", "(k: INT) : INT", "Add(k := , twice => )", "METHOD of tally"],
+      ["Clear", "method", "()", "Clear()", "METHOD of tally"],
+    ]);
+  });
+
+  it("offers an FB instance's methods after its pins", () => {
+    expect(at("C1.")?.options.map((o) => [o.label, o.type])).toEqual([
+      ["Enable", "property"],
+      ["Total", "property"],
+      ["Count", "property"],
+      ["Reset", "method"],
+    ]);
+  });
+
+  it("keeps `Prog.M` out of the plain words, and offers nothing after a name with neither members nor methods", () => {
+    expect(
+      at("x := Ta")
+        ?.options.filter((o) => o.type === "function")
+        .map((o) => o.label),
+    ).toEqual(["ABS"]);
+    expect(at("x := Nobody.")).toBeNull();
+    expect(at("x := Tally.Add.")).toBeNull();
+  });
+});
+
 describe("the working copy's function blocks (issue 9: user FB members before a save)", () => {
   const fb = (name: string, declarations: string) => ({
     name,
@@ -206,5 +261,13 @@ describe("the working copy's function blocks (issue 9: user FB members before a 
     ]);
     const members = memberCompletions(["c"], { symbols: [symbol("c", "counter")], library, structs: new Map() });
     expect(members?.map((m) => m.label)).toEqual(["Enable", "Step", "Count"]);
+    // the saved methods stay: the declarations do not declare them
+    const saved = workingLibrary(
+      [{ ...COUNTER, methods: [ABS] }],
+      [fb("Counter", "VAR_INPUT\n    On : BOOL;\nEND_VAR")],
+    );
+    expect(saved.map((e) => [e.name, e.inputs.map((p) => p.name), e.methods?.map((m) => m.name)])).toEqual([
+      ["Counter", ["On"], ["ABS"]],
+    ]);
   });
 });

@@ -26,9 +26,10 @@ export function declaredSymbols(declarations: string): SymbolInfo[] | null {
 /**
  * The library with each function block of the working copy described by its current declarations
  * (an FB created or changed since the last save); an FB whose text does not read as a table keeps
- * its saved entry.
+ * its saved entry (and it keeps its saved methods).
  */
 export function workingLibrary(library: readonly LibraryEntry[], pous: readonly Pou[]): LibraryEntry[] {
+  const saved = new Map(library.map((e) => [e.name.toUpperCase(), e]));
   const working = pous.flatMap((pou): LibraryEntry[] => {
     const symbols = pou.kind === "function_block" ? declaredSymbols(pou.declarations ?? "") : null;
     if (!symbols) return [];
@@ -45,6 +46,7 @@ export function workingLibrary(library: readonly LibraryEntry[], pous: readonly 
         extensible: false,
         return_type: null,
         comment: null,
+        methods: saved.get(pou.name.toUpperCase())?.methods ?? [], // as saved: methods are not in the declarations
       },
     ];
   });

@@ -5,8 +5,8 @@
 // editor's menu and value prompt. An array element `a[i]` acts on the element `i` names now.
 // An IL body also shows the accumulator after each line (ilOnline.ts), from the instance's probes. A FUNCTION has
 // no instance: its own variables show while the scan is halted in a call of it (callValues.ts). A METHOD's or
-// property accessor's body (the Methods tab) shows its FB instance's variables so, and a method's own from the
-// call stack while halted in it (methodScope.ts: its own names hide the FB's).
+// property accessor's body (the Methods tab) shows its FB instance's variables so, and its own from the call stack
+// while halted in it (methodScope.ts: its own names hide the FB's).
 import { useEffect, useMemo, useState, type ReactNode } from "react";
 import type { Pou } from "../generated/api";
 import { MenuList } from "../ui/MenuList";
@@ -49,8 +49,8 @@ export interface StMember {
   name: string;
   /** Its declarations: its own variables, which hide the FB's. */
   declarations: string;
-  /** The engine's POU of a method (`FB.M`), where the scan halts and the call stack names it; null for an accessor. */
-  call: string | null;
+  /** The engine's POU of a method (`FB.M`) or accessor (`FB.P.GET`), where the scan halts and the call stack names it. */
+  call: string;
   /** The body's file (methods/members.ts memberFile), naming the subscription. */
   file: string;
 }

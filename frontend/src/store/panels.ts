@@ -20,6 +20,8 @@ export interface Focus {
   part?: "declarations" | "body" | null;
   /** A method or property of the function block `pou` (its texts are the files `<FB>.<member>/...`). */
   member?: string | null;
+  /** The property accessor the place is in (the files `<FB>.<property>.GET/...`), else none. */
+  accessor?: "GET" | "SET" | null;
   /** An action or named transition of an SFC POU the place is in ("actions/Fill"; the file `<POU>/actions/Fill`). */
   body?: string | null;
   /** Increases with every request, so revealing the same place twice still moves the editor. */
@@ -65,8 +67,11 @@ export function focusOf(d: Diagnostic): Omit<Focus, "seq"> | null {
   if (projectPart) return { pou: projectPart, network: null, element: null, line: d.line ?? null, part: null };
   if (!d.pou) return null;
   const part = d.file?.endsWith("/declarations") ? "declarations" : d.file?.endsWith("/body") ? "body" : null;
-  const method = /^([A-Za-z_][A-Za-z0-9_]*)\.([A-Za-z_][A-Za-z0-9_]*)[^/]*\/(declarations|body)$/.exec(d.file ?? "");
-  if (method) return { pou: method[1]!, member: method[2]!, line: d.line ?? null, part };
+  const method = /^([A-Za-z_][A-Za-z0-9_]*)\.([A-Za-z_][A-Za-z0-9_]*)(?:\.(GET|SET))?\/(declarations|body)$/i.exec(
+    d.file ?? "",
+  );
+  if (method)
+    return { pou: method[1]!, member: method[2]!, accessor: accessorOf(method[3]), line: d.line ?? null, part };
   const sfcPart = /^[^/]+\/((?:actions|transitions)\/[^/]+)$/.exec(d.file ?? "")?.[1] ?? null;
   return {
     pou: d.pou,
@@ -78,11 +83,14 @@ export function focusOf(d: Diagnostic): Omit<Focus, "seq"> | null {
   };
 }
 
-/** A POU named as the engine names a method's code (`COUNTER.SCALED`, a halt's place): its FB and the member. */
-export function methodPlace(pou: string): { pou: string; member: string } | null {
-  const match = /^([A-Za-z_][A-Za-z0-9_]*)\.([A-Za-z_][A-Za-z0-9_]*)/.exec(pou);
-  return match ? { pou: match[1]!, member: match[2]! } : null;
+/** A POU named as the engine names a method's or accessor's code (`COUNTER.SCALED`, `TANK.LEVEL.GET`, a halt's
+ * place): its FB, the member and the accessor. */
+export function methodPlace(pou: string): { pou: string; member: string; accessor: "GET" | "SET" | null } | null {
+  const match = /^([A-Za-z_][A-Za-z0-9_]*)\.([A-Za-z_][A-Za-z0-9_]*)(?:\.(GET|SET)\b)?/i.exec(pou);
+  return match ? { pou: match[1]!, member: match[2]!, accessor: accessorOf(match[3]) } : null;
 }
+
+const accessorOf = (word: string | undefined) => (word ? (word.toUpperCase() as "GET" | "SET") : null);
 
 export const emptyPanels: PanelsData = {
   panel: "diagnostics",

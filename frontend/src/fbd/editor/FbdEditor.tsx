@@ -32,6 +32,7 @@ import { parseClip, pasteClip, serializeClip } from "../clipboard";
 import { refusal } from "../compat";
 import {
   findNode,
+  instanceMethodEntries,
   kindOf,
   networksOf,
   nextInput,
@@ -190,6 +191,7 @@ export function FbdEditor({
   const byName = useMemo(() => new Map(library.map((e) => [e.name.toUpperCase(), e])), [library]);
   const lookup = useCallback((call: string) => byName.get(call.toUpperCase()), [byName]);
   const known = useMemo(() => symbolNames(symbols), [symbols]);
+  const pickable = useMemo(() => [...library, ...instanceMethodEntries(symbols, lookup)], [library, symbols, lookup]);
   const onNear = useCallback(
     (network: string, isNear: boolean) => dispatch({ type: "near", network, near: isNear }),
     [],
@@ -828,7 +830,7 @@ export function FbdEditor({
         ) : null}
         {picker ? (
           <BoxPicker
-            library={library}
+            library={pickable}
             title="Insert block"
             defaultEn={() => false}
             onPick={pickBlock}

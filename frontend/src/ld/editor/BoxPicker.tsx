@@ -1,5 +1,5 @@
-// The box picker: a searchable list of every standard and user function and function block
-// (from /api/library), with the EN/ENO choice. LD boxes and FBD blocks share it; they differ in the
+// The box picker: a searchable list of every standard and user function and function block, and of the programs'
+// methods (`Prog.M`), from /api/library, with the EN/ENO choice. LD boxes and FBD blocks share it; they differ in the
 // dialog's name and in when EN/ENO is proposed.
 import { useMemo, useState } from "react";
 import type { LibraryEntry } from "../../generated/api";
@@ -25,6 +25,9 @@ export function searchLibrary(library: readonly LibraryEntry[], query: string): 
 
 /** GR-27 (b): a box without BOOL inputs needs EN/ENO to carry the rung's power. */
 export const needsEn = (entry: LibraryEntry): boolean => !entry.inputs.some((p) => p.type.toUpperCase() === "BOOL");
+
+/** FB, FUN, or METHOD for a program's method (`Prog.M`: the library lists it as a function). */
+const entryKind = (e: LibraryEntry) => (e.kind === "function_block" ? "FB" : e.name.includes(".") ? "METHOD" : "FUN");
 
 const signature = (e: LibraryEntry) =>
   `(${e.inputs.map((p) => p.name).join(", ")})${e.kind === "function" && e.return_type ? ` : ${e.return_type}` : e.outputs.length ? ` → ${e.outputs.map((p) => p.name).join(", ")}` : ""}`;
@@ -77,7 +80,7 @@ export function BoxPicker({ library, onPick, onCancel, title = "Insert box", def
               <span className="ld-entry-name">{entry.name}</span>
               <span className="ld-entry-signature">{signature(entry)}</span>
               <span className="ld-entry-kind">
-                {entry.kind === "function_block" ? "FB" : "FUN"}
+                {entryKind(entry)}
                 {entry.source === "standard" ? "" : ` · ${entry.source}`}
               </span>
               {entry.comment ? <span className="ld-entry-comment">{entry.comment}</span> : null}

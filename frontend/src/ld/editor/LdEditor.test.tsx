@@ -2,7 +2,7 @@
 import { act, fireEvent, render, screen, within } from "@testing-library/react";
 import { useState } from "react";
 import { describe, expect, it, vi } from "vitest";
-import { bodyOf, c, LIBRARY, motorMain, net, q } from "../fixtures";
+import { bodyOf, c, entry, LIBRARY, motorMain, net, q } from "../fixtures";
 import { historyOf, type History } from "../../store/history";
 import { locate, networksOf, type LdBody, type LdElement } from "../model";
 import { LdEditor, type LdEditorProps } from "./LdEditor";
@@ -236,6 +236,29 @@ describe("box picker", () => {
       varClass: "VAR",
       initial: "",
       comment: "",
+    });
+  });
+
+  it("offers a program's method as Prog.M and inserts its box without an instance (issue 25)", () => {
+    const add = entry("Tally.Add", "function", [["k", "INT"]], [["twice", "INT"]], {
+      source: "user",
+      return_type: "INT",
+    });
+    const t = setup(bodyOf(net("n1", c("a"), q("m"))), { library: [...LIBRARY, add] });
+    fireEvent.mouseDown(t.hit("a"));
+    t.key("b");
+    const dialog = screen.getByRole("dialog", { name: "Insert box" });
+    fireEvent.change(within(dialog).getByRole("textbox"), { target: { value: "tally" } });
+    const [option] = within(dialog).getAllByRole("option");
+    expect(
+      ["name", "signature", "kind"].map((part) => option!.querySelector(`.ld-entry-${part}`)?.textContent),
+    ).toEqual(["Tally.Add", "(k) : INT", "METHOD · user"]);
+    fireEvent.keyDown(within(dialog).getByRole("textbox"), { key: "Enter" });
+    expect(networksOf(t.current())[0]!.elements![1]).toMatchObject({
+      type: "box",
+      call: "Tally.Add",
+      instance: null,
+      en: true, // no BOOL input to carry the rung's power (GR-27)
     });
   });
 
