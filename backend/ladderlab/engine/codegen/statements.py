@@ -799,7 +799,7 @@ class Statements:
             if slot.var_class == "VAR_IN_OUT":
                 if not isinstance(value, ir.Var):
                     raise CodegenError(f"VAR_IN_OUT {pin} needs a variable")
-                self.src.line(f"{owner}.{attr} = {self.x.in_out_argument(value)}")
+                self.src.line(f"{owner}.{attr} = {self.x.in_out_argument(value, slot.type)}")
                 return None
             if slot.var_class != "VAR_INPUT":
                 raise CodegenError(f"{pin} is not an input of {user.name}")

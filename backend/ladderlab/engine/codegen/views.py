@@ -6,7 +6,10 @@ variable the access covers, ``Layout.write`` splices new bytes in and decodes th
 bytes the variable cannot hold exactly (a BOOL byte of 2, a character after a STRING's terminator, a STRUCT's
 padding byte other than 0) is a fault, so no value changes other than the bytes written. The layouts come from
 the lowering as specs (ir/byte_layout.py): ``("int", size, signed)``, ``("real", size)``, ``("bool",)``,
-``("string", n)``, ``("array", count, element spec)``, ``("struct", name, size, pack_mode, members)``.
+``("string", n)``, ``("range", low, high, base spec)``, ``("array", count, element spec)``,
+``("struct", name, size, pack_mode, members)``. A subrange's bytes must decode into its range: a write through a
+pointer of its base type (``POINTER TO INT`` over an ``INT (0..100)``) and a read through a pointer to a subrange
+over a variable of its base type fault ``subrange_violation`` outside it, naming the pointer (``ADR(v)``).
 """
 
 from __future__ import annotations
@@ -15,9 +18,9 @@ import functools
 import struct
 from typing import Any
 
-from ..errors import INDEX_RANGE, PlcRuntimeError, null_dereference, pointer_outside_bytes
+from ..errors import INDEX_RANGE, SUBRANGE, PlcRuntimeError, check_subrange, null_dereference, pointer_outside_bytes
 from . import names
-from .runtime import Ref, dangling
+from .runtime import ElementRef, Ref, dangling
 
 _INT_FORMATS = {(1, False): "<B", (1, True): "<b", (2, False): "<H", (2, True): "<h"}
 _INT_FORMATS |= {(4, False): "<I", (4, True): "<i", (8, False): "<Q", (8, True): "<q"}
@@ -50,6 +53,25 @@ class Scalar:
         if self.codec.pack(new) != whole:  # a BOOL byte other than 0 / 1, a REAL NaN payload Python cannot keep
             raise _not_kept(f"the bytes {bytes(whole).hex()} for a {self.kind}")
         return new
+
+
+class Ranged:
+    """A subrange of an integer type: its base's bytes, decoded and written only as a value in ``low..high``."""
+
+    def __init__(self, low: int, high: int, base: Scalar) -> None:
+        self.low, self.high, self.base, self.size = low, high, base, base.size
+
+    def encode(self, value: int) -> bytes:
+        return self.base.encode(value)
+
+    def decode(self, data: bytes) -> int:
+        return check_subrange(self.base.decode(data), self.low, self.high)
+
+    def read(self, value: int, offset: int, size: int) -> bytes:
+        return self.base.read(value, offset, size)
+
+    def write(self, value: int, offset: int, data: bytes) -> int:
+        return check_subrange(self.base.write(value, offset, data), self.low, self.high)
 
 
 class String:
@@ -161,20 +183,26 @@ def layout(spec: tuple) -> Any:
         return String(spec[1])
     if kind == "struct":
         return StructLayout(spec[1], spec[2], spec[4])
+    if kind == "range":
+        return Ranged(spec[1], spec[2], layout(spec[3]))
     return ArrayLayout(spec[1], layout(spec[2]))
 
 
 class ViewRef(Ref):
     """A pointer that sees the variable ``(c, k)`` (laid out as ``whole``; ``k`` None: the array ``c`` itself) from
     byte ``offset`` on as a value of the ``seen`` layout. It may point one past the variable's end, not read or
-    write there; ``frame`` is the function call whose variable it is (runtime.Frame), None for any other."""
+    write there; ``frame`` is the function call whose variable it is (runtime.Frame), None for any other. ``origin``
+    is the REF()/ADR() it came from, which points at byte ``start``: its text is that origin moved by the rest."""
 
-    __slots__ = ("frame", "offset", "origin", "seen", "whole")
+    __slots__ = ("frame", "offset", "origin", "seen", "start", "whole")
 
-    def __init__(self, c: object, k: object, whole: Any, offset: int, seen: Any, origin: str, frame: Any) -> None:
-        moved = f" + {offset}" if offset else ""
-        super().__init__(c, k, origin + moved)
+    def __init__(
+        self, c: object, k: object, whole: Any, offset: int, seen: Any, origin: str, frame: Any, start: int = 0
+    ) -> None:
+        moved = offset - start
+        super().__init__(c, k, origin + (f" {'+' if moved > 0 else '-'} {abs(moved)}" if moved else ""))
         self.whole, self.offset, self.seen, self.origin, self.frame = whole, offset, seen, origin, frame
+        self.start = start
 
     def _target(self, size: int) -> object:
         """The variable, once the ``size`` bytes from ``offset`` on are known to lie inside it (and its call alive)."""
@@ -190,14 +218,26 @@ class ViewRef(Ref):
             self._target(0)
             return ArrayView(self, self.seen)
         value = self._target(self.seen.size)
-        return self.seen.decode(self.whole.read(value, self.offset, self.seen.size))
+        try:
+            return self.seen.decode(self.whole.read(value, self.offset, self.seen.size))
+        except PlcRuntimeError as error:
+            raise self._through(error, "read") from None
 
     @v.setter
     def v(self, new: object) -> None:
         value = self._target(self.seen.size)
-        written = self.whole.write(value, self.offset, self.seen.encode(new))
+        try:
+            written = self.whole.write(value, self.offset, self.seen.encode(new))
+        except PlcRuntimeError as error:
+            raise self._through(error, "written") from None
         if self.k is not None and written is not value:
             self.c[self.k] = written  # type: ignore[index]  # as above
+
+    def _through(self, error: PlcRuntimeError, how: str) -> PlcRuntimeError:
+        """A subrange fault of a value met through this pointer, saying so (the direct assignment's words first)."""
+        if error.code != SUBRANGE:
+            return error
+        return PlcRuntimeError(SUBRANGE, f"{error.message}: {how} through {self.text}")
 
     @property
     def pair(self) -> tuple[object, object]:
@@ -221,12 +261,16 @@ class ViewRef(Ref):
         position = self.offset + offset
         if not 0 <= position <= self.whole.size:
             raise pointer_outside_bytes(f"{what} moved by {offset} bytes", position, 0, self.whole.size)
-        return ViewRef(self.c, self.k, self.whole, position, self.seen, self.origin, self.frame)
+        return ViewRef(self.c, self.k, self.whole, position, self.seen, self.origin, self.frame, self.start)
 
     def __eq__(self, other: object) -> bool:
         if isinstance(other, ViewRef):
             return other.c is self.c and other.k == self.k and other.offset == self.offset
-        return self.offset == 0 and isinstance(other, Ref) and other.c is self.c and other.k == self.k
+        if not isinstance(other, Ref) or other.c is not self.c:
+            return False
+        if self.k is None:  # the array c seen from one of its elements: ``other`` to that element
+            return isinstance(other.k, int) and other.k * self.whole.element.size == self.offset
+        return self.offset == 0 and other.k == self.k
 
     def __hash__(self) -> int:
         return hash((id(self.c), self.k, self.offset))
@@ -243,7 +287,8 @@ class ArrayView:
 
     def _element(self, index: int) -> ViewRef:
         ref, step = self.ref, self.seen.element.size
-        return ViewRef(ref.c, ref.k, ref.whole, ref.offset + index * step, self.seen.element, ref.origin, ref.frame)
+        offset = ref.offset + index * step
+        return ViewRef(ref.c, ref.k, ref.whole, offset, self.seen.element, ref.origin, ref.frame, ref.start)
 
     def __getitem__(self, index: int) -> object:
         return self._element(index).v
@@ -253,6 +298,11 @@ class ArrayView:
 
     def __len__(self) -> int:
         return self.seen.count
+
+    def ll_assign(self, source: list) -> None:
+        """``pt^ := arr``: each element's bytes written in turn (runtime.assign_into)."""
+        for index, value in enumerate(source):
+            self[index] = value
 
     def __iter__(self):
         return (self[i] for i in range(self.seen.count))
@@ -265,14 +315,15 @@ def view(ref: Ref | None, whole: tuple, seen: tuple) -> ViewRef | None:
         return None
     seen_layout = layout(seen)
     if isinstance(ref, ViewRef):
-        return ViewRef(ref.c, ref.k, ref.whole, ref.offset, seen_layout, ref.origin, ref.frame)
+        return ViewRef(ref.c, ref.k, ref.whole, ref.offset, seen_layout, ref.origin, ref.frame, ref.start)
     element = layout(whole)
     frame = getattr(ref, "frame", None)
     if isinstance(ref.c, list) and isinstance(ref.k, int):
         array = ArrayLayout(len(ref.c), element)
-        origin = ref.origin if hasattr(ref, "origin") else ref.text
         offset = ref.k * element.size if 0 <= ref.k <= len(ref.c) else -1
-        return ViewRef(ref.c, None, array, offset, seen_layout, origin, frame)
+        if isinstance(ref, ElementRef):  # moved by arithmetic: its origin points ``moved`` bytes before it
+            return ViewRef(ref.c, None, array, offset, seen_layout, ref.origin, frame, offset - ref.moved)
+        return ViewRef(ref.c, None, array, offset, seen_layout, ref.text, frame, offset)
     return ViewRef(ref.c, ref.k, element, 0, seen_layout, ref.text, frame)
 
 
