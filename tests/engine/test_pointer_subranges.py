@@ -4,7 +4,9 @@ A subrange ``INT (0..100)`` written through a pointer of its base type (REF_TO I
 INT, a VAR_IN_OUT of INT), through a byte view (POINTER TO BYTE, moved by an offset), or as an array element or a
 STRUCT member, faults ``subrange_violation`` with the words of a direct out-of-range assignment (``500 is outside the
 subrange 0..100``) and what it was written through, at the writing statement's POU and line; in-range writes work.
-A pointer to a subrange over a variable of its base type faults when it reads a value outside the range. Pointers:
+A pointer to a subrange over a variable of its base type faults when it reads a value outside the range; a pointer
+copied out of an FB or method output keeps the check; an array assigned whole into an array of a subrange (an
+assignment, an input, an output) has every element checked. Pointers:
 seed 000 TYP-42 (ADR), TYP-43 (byte arithmetic), TYP-44 (``^``), TYP-46 (initialiser), TYP-47 (the run-time check
 covers the target object; subranges TYP-14). Expected values are computed by hand from the program text.
 """
@@ -30,6 +32,19 @@ VAR_INPUT r : REFERENCE TO INT; n : INT; END_VAR
 r := n;
 SetRef := 0;
 END_FUNCTION
+FUNCTION_BLOCK Owner
+VAR_OUTPUT q : POINTER TO Pct; END_VAR
+VAR v : Pct; END_VAR
+q := ADR(v);
+END_FUNCTION_BLOCK
+FUNCTION_BLOCK Lender
+VAR v : Pct; END_VAR
+METHOD Lend : BOOL
+VAR_OUTPUT q : POINTER TO Pct; END_VAR
+q := ADR(v);
+Lend := TRUE;
+END_METHOD
+END_FUNCTION_BLOCK
 FUNCTION_BLOCK Setter
 VAR_IN_OUT io : INT; END_VAR
 VAR_INPUT n : INT; END_VAR
@@ -59,6 +74,8 @@ WRITES = [
     ("v : Pct; n : INT;", "n := SetInt(v, k * 40);", "v", "the VAR_IN_OUT argument V", "x := n;", "SETINT"),
     ("v : Pct; f : Setter;", "f(io := v, n := k * 40);", "v", "the VAR_IN_OUT argument V", "io := n;", "SETTER"),
     ("v : Pct; n : INT;", "n := SetRef(v, k * 40);", "v", "REF(v)", "r := n;", "SETREF"),
+    ("o : Owner; p : POINTER TO INT;", "o(q => p);\np^ := k * 40;", "o.v", "ADR(v)", "p^ := k * 40;", "MAIN"),
+    ("l : Lender; p : POINTER TO INT; b : BOOL;", "l.Lend(q => p);\np^ := k * 40;", "l.v", "ADR(v)", "p^ := k * 40;", "MAIN"),
 ]  # fmt: skip
 
 
@@ -191,3 +208,56 @@ def test_any_value_written_through_a_pointer_is_kept_in_range_or_faults(low, spa
             f"{value} is outside the subrange {low}..{high}: written through ADR(v)",
         )
         assert sim.read("Main.v") == (0 if low <= 0 <= high else low)
+
+
+ARRAYS = """FUNCTION Middle : INT
+VAR_INPUT a : ARRAY[1..3] OF Pct; END_VAR
+Middle := a[2];
+END_FUNCTION
+FUNCTION_BLOCK Keeper
+VAR_INPUT a : ARRAY[1..3] OF Pct; END_VAR
+END_FUNCTION_BLOCK
+FUNCTION_BLOCK Giver
+VAR_INPUT n : INT; END_VAR
+VAR_OUTPUT o : ARRAY[1..3] OF INT; END_VAR
+o[2] := n;
+END_FUNCTION_BLOCK"""
+
+
+@pytest.mark.parametrize(
+    "declarations, statement, path, first",
+    [
+        ("a : ARRAY[1..3] OF Pct;", "a := b;", "a", [1, 60, 3]),
+        ("m : INT;", "m := Middle(b);", "m", 60),
+        ("f : Keeper;", "f(a := b);", "f.a[2]", 60),
+        ("g : Giver; a : ARRAY[1..3] OF Pct;", "g(n := b[2], o => a);", "a", [0, 60, 0]),
+    ],
+)
+def test_an_array_assigned_whole_into_an_array_of_a_subrange_has_every_element_checked(
+    declarations, statement, path, first
+):
+    """b[2] is 60, then 120: the array (a copy, an input, an output) takes 60, and 120 is the fault of a direct
+    assignment, at the statement; nothing of the array is written (it was [1, 120, 3] silently before)."""
+    body = f"b[2] := b[2] + 60;\n{statement}"
+    text = program(f"b : ARRAY[1..3] OF INT := [1, 0, 3]; {declarations}", body, f"{TYPES}\n{ARRAYS}")
+    sim = build(text).simulation()
+    sim.cycle(1)
+    assert sim.fault is None, sim.fault.text()
+    assert sim.read(f"Main.{path}") == first
+    sim.cycle(1)
+    assert (sim.fault.code, sim.fault.message) == ("subrange_violation", "120 is outside the subrange 0..100")
+    assert sim.fault.origin.line == _line(text, statement) and sim.read(f"Main.{path}") == first
+
+
+def test_an_array_seen_over_other_memory_is_copied_when_passed_by_value():
+    """``Low(pa^)`` over a DWORD: the function's input is a copy, so its write leaves d as it was (it wrote d's low
+    byte before); it returns what it wrote, 16#FF."""
+    declarations = "d : DWORD := 16#11223344; pa : POINTER TO ARRAY[0..3] OF BYTE; n : INT;"
+    function = """FUNCTION Low : INT
+VAR_INPUT a : ARRAY[0..3] OF BYTE; END_VAR
+a[0] := 16#FF;
+Low := BYTE_TO_INT(a[0]);
+END_FUNCTION"""
+    sim = build(program(declarations, "pa := ADR(d);\nn := Low(pa^);", function)).simulation()
+    sim.cycle(1)
+    assert (sim.fault, sim.read("Main.n"), sim.read("Main.d")) == (None, 0xFF, 0x11223344)

@@ -150,7 +150,7 @@ def interface_value(node: ast.Expr, ctx: PouContext, target: Reference) -> Expr:
     return AddressOf(lower_access(node, ctx), target, print_expression(node))
 
 
-def _reference_to(expr: Expr, target: Reference, node: ast.Expr) -> Expr:
+def _reference_to(expr: Expr, target: Reference, node: ast.Expr | None) -> Expr:
     """A reference stored as a reference to ``target.target``: NULL, one to a variable of that very type, or a
     ``View`` of the variable's bytes as that type (a ``POINTER TO BYTE`` over a STRING: ir/byte_layout.py) when
     both types have a byte layout."""
@@ -179,6 +179,8 @@ def _referred_text(ty: IrType) -> str:
 
 
 def convert(expr: Expr, target: IrType) -> Expr:
+    """``expr`` stored in ``target``: a ``Convert`` for an accepted widening; a reference copied into a reference
+    whose target differs from its own by a subrange (an output ``q => p``) sees its variable through a view."""
     source = expr.type
     if source is target:  # the common case: lowered types are mostly shared instances
         return expr
@@ -188,6 +190,12 @@ def convert(expr: Expr, target: IrType) -> Expr:
         and value_type(source) != value_type(target)
     ):
         return Convert(expr, value_type(source), value_type(target))
+    if (
+        isinstance(source, Reference)
+        and isinstance(target, Reference)
+        and (has_subrange(source.target) or has_subrange(target.target))
+    ):
+        return _reference_to(expr, target, None)
     return expr
 
 

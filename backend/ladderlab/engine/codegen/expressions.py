@@ -25,7 +25,7 @@ from .context import CodegenError, std_fb_class, std_pin_type
 from .mentions import calls_in, var_text
 from .scope import Scope
 from .source import Source
-from .typeinfo import is_composite, runtime_name, store_code, store_value
+from .typeinfo import is_composite, runtime_name, store_code, store_value, store_whole
 
 _OPERATOR_FUNCTIONS = {
     op: op for op in ("ADD", "SUB", "MUL", "DIV", "MOD", "EXPT", "AND", "OR", "XOR", "EQ", "NE", "LT", "LE", "GT", "GE")
@@ -310,7 +310,7 @@ class Expressions:
         if is_composite(target):
             if isinstance(target, t.FbInstance):
                 raise CodegenError("an FB instance cannot be passed by value")
-            return f"ll_copy({self.expr(e)})"
+            return f"ll_copy({store_whole(self.expr(e), e.type, target)})"
         return self.stored(e, target)
 
     def stored(self, e: ir.Expr, target: t.IrType) -> str:

@@ -109,6 +109,16 @@ class Structure(Addressable):
                 setattr(self, name, getattr(source, name))
 
 
+class SeenArray:
+    """Base of ``views.ArrayView`` (an array seen over other memory through a pointer): passed by value, it is copied
+    into a list of its elements' values, never shared with the memory it sees."""
+
+    __slots__ = ()
+
+    def ll_copy(self) -> list:
+        raise NotImplementedError
+
+
 def is_composite_value(value: object) -> bool:
     return value.__class__ is list or isinstance(value, Structure)
 
@@ -119,7 +129,7 @@ def deep_copy(value):
         if value and is_composite_value(value[0]):
             return [deep_copy(v) for v in value]
         return value[:]
-    if isinstance(value, Structure):
+    if isinstance(value, Structure | SeenArray):
         return value.ll_copy()
     return value
 
@@ -134,6 +144,17 @@ def assign_into(target, source) -> None:
             target[:] = source
     else:
         target.ll_assign(source)
+
+
+def in_range(value, low: int, high: int):
+    """``value``, an array (nested lists) assigned whole into an array of the subrange low..high, once every element
+    lies in it; the first that does not is the fault of a direct assignment (``check_subrange``)."""
+    for element in value:
+        if element.__class__ is list:
+            in_range(element, low, high)
+        else:
+            check_subrange(element, low, high)
+    return value
 
 
 def with_values(obj, **attributes):
@@ -441,6 +462,7 @@ def namespace() -> dict[str, object]:
     ns.update(
         ll_ix=check_index,
         ll_sub=check_subrange,
+        ll_in_range=in_range,
         ll_fit=check_fit,
         ll_copy=deep_copy,
         ll_assign=assign_into,

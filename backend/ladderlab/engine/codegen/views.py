@@ -20,7 +20,7 @@ from typing import Any
 
 from ..errors import INDEX_RANGE, SUBRANGE, PlcRuntimeError, check_subrange, null_dereference, pointer_outside_bytes
 from . import names
-from .runtime import ElementRef, Ref, dangling
+from .runtime import ElementRef, Ref, SeenArray, dangling, deep_copy
 
 _INT_FORMATS = {(1, False): "<B", (1, True): "<b", (2, False): "<H", (2, True): "<h"}
 _INT_FORMATS |= {(4, False): "<I", (4, True): "<i", (8, False): "<Q", (8, True): "<q"}
@@ -276,7 +276,7 @@ class ViewRef(Ref):
         return hash((id(self.c), self.k, self.offset))
 
 
-class ArrayView:
+class ArrayView(SeenArray):
     """``pt^`` of a pointer to an array seen over other memory: ``pt^[i]`` reads and writes element i's bytes alone
     (OSCAT's ``REF_TO ARRAY[1..255] OF BYTE`` over a shorter STRING reads only the characters it indexes)."""
 
@@ -298,6 +298,10 @@ class ArrayView:
 
     def __len__(self) -> int:
         return self.seen.count
+
+    def ll_copy(self) -> list:
+        """Its elements' values (a nested array seen: lists of them), for an array input passed ``pt^`` by value."""
+        return [deep_copy(value) for value in self]
 
     def ll_assign(self, source: list) -> None:
         """``pt^ := arr``: each element's bytes written in turn (runtime.assign_into)."""
