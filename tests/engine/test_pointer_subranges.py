@@ -17,6 +17,10 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from ladderlab.model.project import Pou
+from ladderlab.simulation.build import build_project
+from tests.ir.diagram_support import box, ld_pou, project, rung
+
 from .ed3_support import build, errors, program
 
 TYPES = """TYPE Pct : INT (0..100); END_TYPE
@@ -261,3 +265,34 @@ END_FUNCTION"""
     sim = build(program(declarations, "pa := ADR(d);\nn := Low(pa^);", function)).simulation()
     sim.cycle(1)
     assert (sim.fault, sim.read("Main.n"), sim.read("Main.d")) == (None, 0xFF, 0x11223344)
+
+
+@pytest.mark.parametrize("variant", ("fast", "monitor", "debug"))
+def test_an_ld_box_s_in_out_keeps_a_subrange_in_range_in_every_variant(variant):
+    """An LD box of an FB whose VAR_IN_OUT is an INT, given a Pct: 50 is written, 500 faults in the FB's body. The
+    monitor variant runs the network under ``if ll_view[u]:`` (its viewed-network list), which once hid the pointer
+    view function of the same name: an internal error."""
+    setter = Pou(
+        name="Setter",
+        kind="function_block",
+        language="st",
+        declarations="VAR_IN_OUT io : INT; END_VAR\nVAR_INPUT n : INT; END_VAR",
+        body="io := n;",
+    )
+    main = ld_pou(
+        "Main",
+        "VAR f : Setter; v : Pct; k : INT; END_VAR",
+        rung("r1", box("b1", "Setter", instance="f", en=True, io="v", n="k")),
+    )
+    sim = build_project(project(main, setter, types="TYPE Pct : INT (0..100); END_TYPE"), variant).simulation()
+    sim.write("Main.k", 50)
+    sim.cycle(1)
+    assert (sim.fault, sim.read("Main.v")) == (None, 50)
+    sim.write("Main.k", 500)
+    sim.cycle(1)
+    assert (sim.fault.code, sim.fault.message, sim.fault.pou) == (
+        "subrange_violation",
+        "500 is outside the subrange 0..100: written through the VAR_IN_OUT argument V",
+        "SETTER",
+    )
+    assert sim.read("Main.v") == 50

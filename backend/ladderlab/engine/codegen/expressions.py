@@ -224,12 +224,12 @@ class Expressions:
         if specs is not None:
             text = f"the VAR_IN_OUT argument {var_text(v)}"
             ref = f"ll_FrameRef(*{code}, {text!r}, ll_fr)" if framed else f"ll_Ref(*{code}, {text!r})"
-            return f"ll_view({ref}, {specs[0]!r}, {specs[1]!r}).pair"
+            return f"ll_seen({ref}, {specs[0]!r}, {specs[1]!r}).pair"
         return f"ll_Pair(*{code}, ll_fr)" if framed else code
 
     def view(self, v: ir.View) -> str:
         """A pointer seeing its target's bytes as another type (engine/codegen/views.py)."""
-        return f"ll_view({self.expr(v.value)}, {v.whole!r}, {v.seen!r})"
+        return f"ll_seen({self.expr(v.value)}, {v.whole!r}, {v.seen!r})"
 
     def attempt(self, a: ir.Attempt) -> str:
         """``?=``: the reference when its instance's class is one of the FBs implementing the interface, else NULL."""

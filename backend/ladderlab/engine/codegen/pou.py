@@ -131,7 +131,7 @@ def emit_reference_inits(module: ModuleContext, layout, holder, src: Source) -> 
             key = str(_offsets(target.slot, initial)[-1])
         ref = f"ll_Ref({container}, {key}, {initial.text!r})"
         if initial.view is not None:
-            ref = f"ll_view({ref}, {initial.view[0]!r}, {initial.view[1]!r})"
+            ref = f"ll_seen({ref}, {initial.view[0]!r}, {initial.view[1]!r})"
         src.line(f"{holder(place.page)}.{place.attr} = {ref}")
 
 

@@ -478,7 +478,7 @@ def namespace() -> dict[str, object]:
         ll_deref=deref,
         ll_ptr_add=pointer_add,
         ll_ptr_order=pointer_order,
-        ll_view=view,
+        ll_seen=view,  # (not ll_view: a monitored network's local, statements.py)
         ll_inf=math.inf,
         ll_nan=math.nan,
         ll_Addressable=Addressable,
