@@ -109,7 +109,8 @@ def in_out_view(argument: IrType, parameter: IrType) -> tuple[Spec, Spec] | str 
         whole, seen = byte_layout(argument), byte_layout(parameter)
         same_base = _base(argument) == _base(parameter)
         return (whole, seen) if same_base and isinstance(whole, tuple) and isinstance(seen, tuple) else None
-    if isinstance(argument, Array) and (has_subrange(argument) or has_subrange(parameter)):
+    elements = _innermost(argument), _innermost(parameter)
+    if elements[0] != elements[1] and any(isinstance(element, Subrange) for element in elements):
         return (
             f"{article(describe(argument))} cannot be passed to a VAR_IN_OUT {describe(parameter)}: the subrange of "
             "its elements would go unchecked (pass an array of the parameter's element type)"
@@ -120,6 +121,11 @@ def in_out_view(argument: IrType, parameter: IrType) -> tuple[Spec, Spec] | str 
 def has_subrange(ty: IrType) -> bool:
     """``ty`` is a subrange or an array of them."""
     return isinstance(ty, Subrange) or (isinstance(ty, Array) and has_subrange(ty.element))
+
+
+def _innermost(ty: IrType) -> IrType:
+    """An array's element type, through every dimension; ``ty`` itself for anything else."""
+    return _innermost(ty.element) if isinstance(ty, Array) else ty
 
 
 def _base(ty: Elementary | Subrange) -> Elementary:
