@@ -177,3 +177,21 @@ def test_a_byte_view_of_an_array_element_shows_and_compares_as_that_element():
     sim.cycle(1)
     assert (sim.read("Main.pb"), sim.read("Main.same")) == ("ADR(a[2])", True)
     assert (sim.read("Main.q"), sim.read("Main.b")) == ("ADR(a[2]) - 1", 0x01)
+
+
+def test_a_byte_other_than_0_or_1_read_as_a_bool_is_a_located_fault():
+    """A BOOL is 0 or 1; CODESYS shows any other byte as INVALID (Beckhoff's CODESYS 2.3 manual, "BOOL"), so b = 1
+    reads TRUE, 0 FALSE and 2 is a fault at the read (it read TRUE before)."""
+    sim = simulation("b : BYTE := 1; pb : POINTER TO BOOL; x : BOOL;", "pb := ADR(b);\nx := pb^;")
+    sim.cycle(1)
+    assert (sim.fault, sim.read("Main.x")) == (None, True)
+    sim.write("Main.b", 0)
+    sim.cycle(1)
+    assert (sim.fault, sim.read("Main.x")) == (None, False)
+    sim.write("Main.b", 2)
+    sim.cycle(1)
+    assert (sim.fault.code, sim.fault.message) == (
+        "index_out_of_range",
+        "reading through a pointer gives the byte 02 for a BOOL, which is neither 0 nor 1",
+    )
+    assert (sim.fault.origin.line, sim.read("Main.x")) == (7, False)  # TYPES, PROGRAM, VAR, decls, END_VAR, pb :=

@@ -296,3 +296,24 @@ def test_an_ld_box_s_in_out_keeps_a_subrange_in_range_in_every_variant(variant):
         "SETTER",
     )
     assert sim.read("Main.v") == 50
+
+
+def test_a_user_write_through_a_pointer_is_refused_when_the_subrange_cannot_hold_it():
+    """Online (ON-11 paths through pointers): ``Main.p^`` := 50 is written into v at the next scan; 500 is refused when
+    given, with the fault's words, and nothing is written; ``Main.q^``, a POINTER TO Pct over the INT x = 500, is no
+    value of its type (reading it is refused), yet x takes a Pct value written through it."""
+    text = program(
+        "v : Pct; x : INT := 500; p : POINTER TO INT; q : POINTER TO Pct;", "p := ADR(v);\nq := ADR(x);", TYPES
+    )
+    sim = build(text).simulation()
+    sim.cycle(1)
+    sim.write("Main.p^", 50)
+    with pytest.raises(ValueError) as refused:
+        sim.write("Main.p^", 500)
+    assert str(refused.value) == "MAIN.P^: 500 is outside the subrange 0..100: written through ADR(v)"
+    with pytest.raises(ValueError) as unread:
+        sim.read("Main.q^")
+    assert str(unread.value) == "MAIN.Q^: 500 is outside the subrange 0..100: read through ADR(x)"
+    sim.write("Main.q^", 7)
+    sim.cycle(1)
+    assert (sim.fault, sim.read("Main.v"), sim.read("Main.x")) == (None, 50, 7)

@@ -4,7 +4,8 @@ LadderLab keeps values as Python objects, not bytes; a view reads and writes the
 would hold, little-endian, computed from the value on each access: ``Layout.read`` encodes only the part of the
 variable the access covers, ``Layout.write`` splices new bytes in and decodes the variable again. A write whose
 bytes the variable cannot hold exactly (a BOOL byte of 2, a character after a STRING's terminator, a STRUCT's
-padding byte other than 0) is a fault, so no value changes other than the bytes written. The layouts come from
+padding byte other than 0) is a fault, so no value changes other than the bytes written; so is reading a byte other
+than 0 or 1 as a BOOL (CODESYS's BOOL is 0 or 1, any other byte it shows as INVALID). The layouts come from
 the lowering as specs (ir/byte_layout.py): ``("int", size, signed)``, ``("real", size)``, ``("bool",)``,
 ``("string", n)``, ``("range", low, high, base spec)``, ``("array", count, element spec)``,
 ``("struct", name, size, pack_mode, members)``. A subrange's bytes must decode into its range: a write through a
@@ -41,7 +42,12 @@ class Scalar:
 
     def decode(self, data: bytes) -> Any:
         value = self.codec.unpack(data)[0]
-        return value != 0 if self.kind == "bool" else value
+        if self.kind != "bool":
+            return value
+        if value not in (0, 1):  # CODESYS's BOOL is 0 or 1; it shows any other byte as INVALID
+            what = f"the byte {value:02x} for a BOOL, which is neither 0 nor 1"
+            raise PlcRuntimeError(INDEX_RANGE, f"reading through a pointer gives {what}")
+        return value == 1
 
     def read(self, value: Any, offset: int, size: int) -> bytes:
         return self.codec.pack(value)[offset : offset + size]
@@ -49,8 +55,10 @@ class Scalar:
     def write(self, value: Any, offset: int, data: bytes) -> Any:
         whole = bytearray(self.codec.pack(value))
         whole[offset : offset + len(data)] = data
+        if self.kind == "bool" and whole[0] > 1:
+            raise _not_kept(f"the bytes {bytes(whole).hex()} for a {self.kind}")
         new = self.decode(bytes(whole))
-        if self.codec.pack(new) != whole:  # a BOOL byte other than 0 / 1, a REAL NaN payload Python cannot keep
+        if self.codec.pack(new) != whole:  # a REAL NaN payload Python cannot keep
             raise _not_kept(f"the bytes {bytes(whole).hex()} for a {self.kind}")
         return new
 
@@ -232,6 +240,15 @@ class ViewRef(Ref):
             raise self._through(error, "written") from None
         if self.k is not None and written is not value:
             self.c[self.k] = written  # type: ignore[index]  # as above
+
+    def trial(self, new: object) -> None:
+        """Fault as writing ``new`` would, on a copy: nothing is written (a user's write through the pointer is
+        refused when it is given, engine/paths.py)."""
+        value = deep_copy(self._target(self.seen.size))
+        try:
+            self.whole.write(value, self.offset, self.seen.encode(new))
+        except PlcRuntimeError as error:
+            raise self._through(error, "written") from None
 
     def _through(self, error: PlcRuntimeError, how: str) -> PlcRuntimeError:
         """A subrange fault of a value met through this pointer, saying so (the direct assignment's words first)."""
