@@ -68,17 +68,6 @@ def _layout(ty: IrType, default: int) -> Spec | str:
     return f"{article(describe(ty))} (it has no byte layout)"
 
 
-def seen_layout(ty: IrType) -> Spec | str:
-    """The spec of what a pointer of another type sees (``pt^``), or why it cannot: no STRUCT, whose members the
-    generated code reaches on the STRUCT's own value, never on bytes decoded into a copy."""
-    spec = element = byte_layout(ty)
-    while isinstance(element, tuple) and element[0] == "array":
-        element = element[2]
-    if isinstance(element, tuple) and element[0] == "struct":
-        return f"the STRUCT {element[1]} (a pointer of another type may see a STRUCT's bytes, not other bytes as one)"
-    return spec
-
-
 def same_target(referred: IrType, target: IrType) -> bool:
     """A reference to ``target`` reaches a variable of ``referred`` directly: one type (STRING lengths aside). A
     subrange and its base differ: a write through a base-typed pointer must not leave the subrange, a read through a
@@ -91,7 +80,7 @@ def same_target(referred: IrType, target: IrType) -> bool:
 def view_specs(referred: IrType, target: IrType) -> tuple[Spec, Spec] | str:
     """``(whole, seen)``: the byte layouts through which a ``REF_TO target`` sees a variable of ``referred``, or why
     it cannot (the message of the refusal)."""
-    whole, seen = byte_layout(referred), seen_layout(target)
+    whole, seen = byte_layout(referred), byte_layout(target)
     if isinstance(whole, tuple) and isinstance(seen, tuple):
         return whole, seen
     problem = whole if isinstance(whole, str) else seen

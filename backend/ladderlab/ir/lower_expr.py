@@ -36,7 +36,7 @@ from ..st.methods import is_self, is_super
 from ..st.printer import print_expression
 from ..st.rules import EnumValue
 from ..st.symbols import PouInfo, PropertyRef, Symbol
-from .byte_layout import has_subrange, same_target, seen_layout, view_specs
+from .byte_layout import has_subrange, same_target, view_specs
 from .codesys_dates import in_seconds
 from .context import PouContext
 from .lower_types import LoweringError, byte_size, engine_value, ir_default
@@ -160,10 +160,6 @@ def _reference_to(expr: Expr, target: Reference, node: ast.Expr | None) -> Expr:
         raise LoweringError(f"a {_reference_text(target)} cannot refer to {_referred_text(expr.type)}", node)
     if same_target(expr.type.target, target.target):
         return expr
-    if isinstance(expr, Binary) and isinstance(seen_layout(expr.type.target), str):
-        # ``ADR(rec) + 2`` as a POINTER TO BYTE: the same address as ADR(rec) seen as bytes, moved by 2 (CODESYS
-        # moves by bytes whatever the pointer's type); a pointer to the STRUCT itself moves by whole STRUCTs only
-        return Binary(expr.op, _reference_to(expr.left, target, node), expr.right, target)  # type: ignore[arg-type]  # a pointer move
     specs = view_specs(expr.type.target, target.target)
     if isinstance(specs, str):
         raise LoweringError(specs, node)

@@ -16,7 +16,7 @@ from functools import cache, lru_cache
 from ...iec import values
 from ...ir import nodes as ir
 from ...ir import types as t
-from ...ir.byte_layout import in_out_view, seen_layout
+from ...ir.byte_layout import byte_layout, in_out_view
 from ...ir.lower_types import byte_size
 from ...ir.types import describe
 from ..stdlib import specialised
@@ -163,7 +163,7 @@ class Expressions:
         if isinstance(b.type, t.Reference):  # p + n, p - n: bytes along the array p points into (runtime.pointer_add)
             offset = right if b.op == "ADD" else f"-({right})"
             what = f"the pointer {var_text(b.left)}" if isinstance(b.left, ir.Var) else "the pointer"
-            spec = seen_layout(b.type.target)
+            spec = byte_layout(b.type.target)
             layout = spec if isinstance(spec, tuple) else None  # none to see: whole elements only
             return f"ll_ptr_add({left}, {offset}, {byte_size(b.type.target)}, {what!r}, {layout!r})"
         if isinstance(b.left.type, t.Reference) and b.op in ("EQ", "NE"):  # one variable referred to, or both NULL

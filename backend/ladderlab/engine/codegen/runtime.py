@@ -109,13 +109,14 @@ class Structure(Addressable):
                 setattr(self, name, getattr(source, name))
 
 
-class SeenArray:
-    """Base of ``views.ArrayView`` (an array seen over other memory through a pointer): passed by value, it is copied
-    into a list of its elements' values, never shared with the memory it sees."""
+class Seen:
+    """Base of ``views.ArrayView`` and ``views.StructView`` (an array or a STRUCT seen over other memory through a
+    pointer): passed by value, it is copied into a list or a structure of its members' values, never shared with the
+    memory it sees."""
 
     __slots__ = ()
 
-    def ll_copy(self) -> list:
+    def ll_copy(self) -> object:
         raise NotImplementedError
 
 
@@ -129,7 +130,7 @@ def deep_copy(value):
         if value and is_composite_value(value[0]):
             return [deep_copy(v) for v in value]
         return value[:]
-    if isinstance(value, Structure | SeenArray):
+    if isinstance(value, Structure | Seen):
         return value.ll_copy()
     return value
 

@@ -21,7 +21,7 @@ from typing import Any
 
 from ..errors import INDEX_RANGE, SUBRANGE, PlcRuntimeError, check_subrange, null_dereference, pointer_outside_bytes
 from . import names
-from .runtime import ElementRef, Ref, SeenArray, dangling, deep_copy
+from .runtime import ElementRef, Ref, Seen, Structure, dangling, deep_copy
 
 _INT_FORMATS = {(1, False): "<B", (1, True): "<b", (2, False): "<H", (2, True): "<h"}
 _INT_FORMATS |= {(4, False): "<I", (4, True): "<i", (8, False): "<Q", (8, True): "<q"}
@@ -156,6 +156,10 @@ class StructLayout:
             if low < high:
                 yield attribute, start, member, low, high
 
+    def encode(self, value: Any) -> bytes:
+        """All its bytes (``pt^ := rec`` over other memory): the members', and padding 0."""
+        return self.read(value, 0, self.size)
+
     def read(self, value: Any, offset: int, size: int) -> bytes:
         data = bytearray(size)
         for attribute, start, member, low, high in self._covered(offset, offset + size):
@@ -225,6 +229,9 @@ class ViewRef(Ref):
         if isinstance(self.seen, ArrayLayout):  # each element is checked when it is read or written
             self._target(0)
             return ArrayView(self, self.seen)
+        if isinstance(self.seen, StructLayout):  # each member is, as it is read or written
+            self._target(self.seen.size)
+            return StructView(self, self.seen)
         value = self._target(self.seen.size)
         try:
             return self.seen.decode(self.whole.read(value, self.offset, self.seen.size))
@@ -263,6 +270,10 @@ class ViewRef(Ref):
         self._target(0 if isinstance(self.seen, ArrayLayout) else self.seen.size)
         return (self, "v")
 
+    def at(self, offset: int, seen: Any) -> ViewRef:
+        """The view of the ``seen`` value ``offset`` bytes further on (an element, a member of what this one sees)."""
+        return ViewRef(self.c, self.k, self.whole, self.offset + offset, seen, self.origin, self.frame, self.start)
+
     def __getitem__(self, key: str) -> object:  # (self, "v") as a VAR_IN_OUT reference
         return self.v
 
@@ -293,7 +304,7 @@ class ViewRef(Ref):
         return hash((id(self.c), self.k, self.offset))
 
 
-class ArrayView(SeenArray):
+class ArrayView(Seen):
     """``pt^`` of a pointer to an array seen over other memory: ``pt^[i]`` reads and writes element i's bytes alone
     (OSCAT's ``REF_TO ARRAY[1..255] OF BYTE`` over a shorter STRING reads only the characters it indexes)."""
 
@@ -303,9 +314,7 @@ class ArrayView(SeenArray):
         self.ref, self.seen = ref, seen
 
     def _element(self, index: int) -> ViewRef:
-        ref, step = self.ref, self.seen.element.size
-        offset = ref.offset + index * step
-        return ViewRef(ref.c, ref.k, ref.whole, offset, self.seen.element, ref.origin, ref.frame, ref.start)
+        return self.ref.at(index * self.seen.element.size, self.seen.element)
 
     def __getitem__(self, index: int) -> object:
         return self._element(index).v
@@ -327,6 +336,57 @@ class ArrayView(SeenArray):
 
     def __iter__(self):
         return (self[i] for i in range(self.seen.count))
+
+
+class StructView(Seen):
+    """``pt^`` of a pointer to a STRUCT seen over other memory (CODESYS's ``POINTER TO Header := ADR(buffer)``):
+    ``pt^.m`` reads and writes member m's bytes alone, where the STRUCT's layout puts them (``StructLayout``); the
+    generated code reaches members by their attribute names, as on a ``Structure``."""
+
+    __slots__ = ("ref", "seen")
+
+    def __init__(self, ref: ViewRef, seen: StructLayout) -> None:
+        self.ref, self.seen = ref, seen
+
+    def _member(self, attribute: str) -> ViewRef:
+        for name, offset, member in self.seen.members:
+            if name == attribute:
+                return self.ref.at(offset, member)
+        raise AttributeError(attribute)
+
+    def __getattr__(self, attribute: str) -> object:
+        return self._member(attribute).v
+
+    def __setattr__(self, attribute: str, value: object) -> None:
+        if attribute in StructView.__slots__:
+            object.__setattr__(self, attribute, value)
+        else:
+            self._member(attribute).v = value
+
+    def __getitem__(self, attribute: str) -> object:  # (view, member) as a VAR_IN_OUT reference or an online path
+        return self._member(attribute).v
+
+    def __setitem__(self, attribute: str, value: object) -> None:
+        self._member(attribute).v = value
+
+    def ll_assign(self, source: object) -> None:
+        """``pt^ := rec``: every byte of the STRUCT written at once, its members' and 0 for padding (assign_into)."""
+        self.ref.v = source
+
+    def ll_copy(self) -> Structure:
+        """Its members' values in a structure of their own, for a STRUCT input passed ``pt^`` by value."""
+        copy = _copy_class(self.seen)()
+        for name, _, _ in self.seen.members:
+            setattr(copy, name, deep_copy(self._member(name).v))
+        return copy
+
+
+@functools.cache
+def _copy_class(seen: StructLayout) -> type[Structure]:
+    """A structure class holding the members of ``seen`` (a by-value copy of a STRUCT seen over other memory reaches
+    them by the generated class's attribute names, the only part of it that code uses)."""
+    fields = tuple(name for name, _, _ in seen.members)
+    return type(f"Seen_{seen.name}", (Structure,), {"__slots__": fields, "ll_fields": fields})
 
 
 def view(ref: Ref | None, whole: tuple, seen: tuple) -> ViewRef | None:
