@@ -105,3 +105,19 @@ def test_an_online_path_through_the_pointer_reads_and_writes_a_member():
     sim.write("Main.pr^.c", 0x0102)
     sim.cycle(1)
     assert sim.read("Main.raw")[8:10] == [2, 1]
+
+
+def test_an_online_write_a_member_seen_over_other_memory_cannot_hold_is_refused():
+    """``Main.pq^.n`` is the INT n of Q seen over an INT (0..100): 50 is written, 500 refused when given."""
+    result = build(
+        "TYPE Q : STRUCT n : INT; END_STRUCT; END_TYPE\nPROGRAM Main\nVAR\n"
+        "v : INT (0..100); pq : POINTER TO Q;\nEND_VAR\npq := ADR(v);\nEND_PROGRAM\n"
+    )
+    sim = result.simulation()
+    sim.cycle(1)
+    with pytest.raises(ValueError) as refused:
+        sim.write("Main.pq^.n", 500)
+    assert str(refused.value) == "MAIN.PQ^.N: 500 is outside the subrange 0..100: written through ADR(v)"
+    sim.write("Main.pq^.n", 50)
+    sim.cycle(1)
+    assert (sim.fault, sim.read("Main.v")) == (None, 50)

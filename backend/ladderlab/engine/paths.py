@@ -131,12 +131,12 @@ class Location:
     def trial(self, roots: Roots, value: object) -> None:
         """NoTarget when writing ``value`` here now would fault (through a pointer that sees other memory: a
         subrange left, a BOOL byte of 2); writes nothing, so a user's write is refused when it is given."""
-        container, _ = self._container(roots, writing=True)
-        trial = getattr(container, "trial", None)  # a views.ViewRef's pair is (the view, "v")
+        container, key = self._container(roots, writing=True)
+        trial = getattr(container, "trial", None)  # a views.ViewRef (its pair is (the view, "v")) or what it sees
         if trial is None:
             return
         try:
-            trial(value)
+            trial(key, value)
         except PlcRuntimeError as error:
             raise NoTarget(f"{self.path}: {error.message}") from None
 

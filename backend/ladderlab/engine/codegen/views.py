@@ -248,9 +248,9 @@ class ViewRef(Ref):
         if self.k is not None and written is not value:
             self.c[self.k] = written  # type: ignore[index]  # as above
 
-    def trial(self, new: object) -> None:
-        """Fault as writing ``new`` would, on a copy: nothing is written (a user's write through the pointer is
-        refused when it is given, engine/paths.py)."""
+    def trial(self, key: object, new: object) -> None:
+        """Fault as writing ``new`` would, on a copy: nothing is written (a user's write through the pointer, its
+        pair ``(self, key)``, is refused when it is given: engine/paths.py)."""
         value = deep_copy(self._target(self.seen.size))
         try:
             self.whole.write(value, self.offset, self.seen.encode(new))
@@ -329,6 +329,10 @@ class ArrayView(Seen):
         """Its elements' values (a nested array seen: lists of them), for an array input passed ``pt^`` by value."""
         return [deep_copy(value) for value in self]
 
+    def trial(self, index: int, new: object) -> None:
+        """``ViewRef.trial`` of element ``index`` (an online path ``pt^[i]``)."""
+        self._element(index).trial("v", new)
+
     def ll_assign(self, source: list) -> None:
         """``pt^ := arr``: each element's bytes written in turn (runtime.assign_into)."""
         for index, value in enumerate(source):
@@ -368,6 +372,10 @@ class StructView(Seen):
 
     def __setitem__(self, attribute: str, value: object) -> None:
         self._member(attribute).v = value
+
+    def trial(self, attribute: str, new: object) -> None:
+        """``ViewRef.trial`` of a member (an online path ``pt^.m``)."""
+        self._member(attribute).trial("v", new)
 
     def ll_assign(self, source: object) -> None:
         """``pt^ := rec``: every byte of the STRUCT written at once, its members' and 0 for padding (assign_into)."""
