@@ -277,7 +277,7 @@ class TypeLowering:
         referred = self.type_of(symbol.type, symbol.type_spec)
         if start.index and isinstance(referred, Array) and len(referred.dims) == len(start.index):
             referred = referred.element
-        if same_target(referred, target.target):
+        if same_target(referred, target.target) or isinstance(referred, FbInstance):  # (an FB: the checker's call)
             return start
         specs = view_specs(referred, target.target)
         if isinstance(specs, str):
