@@ -146,3 +146,52 @@ def test_a_whole_array_read_through_a_view_is_a_copy():
     )
     sim.cycle(1)
     assert (sim.fault, sim.read("Main.x"), sim.read("Main.s")) == (None, [65, 9, 0, 0], "CB")  # 'A' 'B' NUL NUL
+
+
+def test_a_whole_array_written_through_a_view_writes_its_bytes():
+    """``pa^ := x`` over a DWORD: bytes 1, 2, 3, 4 little-endian are 16#04030201 (was an internal error)."""
+    sim = simulation(
+        "d : DWORD; x : ARRAY [0..3] OF BYTE := [1, 2, 3, 4]; pa : POINTER TO ARRAY [0..3] OF BYTE;",
+        "pa := ADR(d);\npa^ := x;",
+    )
+    sim.cycle(1)
+    assert (sim.fault, sim.read("Main.d")) == (None, 0x04030201)
+
+
+def test_a_pointer_declared_with_another_type_s_address_sees_its_bytes():
+    """``pb : POINTER TO BYTE := ADR(s)`` in the declaration sees the STRING's bytes as the same assignment in the body
+    does (TYP-46): 'a' is 97 (it read the STRING itself into the BYTE before)."""
+    sim = simulation("s : STRING := 'abc'; pb : POINTER TO BYTE := ADR(s); b : BYTE;", "b := pb^;")
+    sim.cycle(1)
+    assert (sim.fault, sim.read("Main.b"), sim.read("Main.pb")) == (None, 97, "ADR(s)")
+
+
+def test_a_byte_view_of_an_array_element_shows_and_compares_as_that_element():
+    """ADR(a[2]) seen as bytes is ADR(a[2]) (not ``+ 2``, its offset in the array), equals ADR(a[2]) and moves from
+    there: one byte back is the high byte of a[1] (16#0102), ``ADR(a[2]) - 1``."""
+    sim = simulation(
+        "a : ARRAY [1..3] OF INT := [16#0102, 16#0304, 16#0506]; pb : POINTER TO BYTE; q : POINTER TO BYTE;"
+        "same : BOOL; b : BYTE;",
+        "pb := ADR(a[2]);\nsame := pb = ADR(a[2]);\nq := pb - 1;\nb := q^;",
+    )
+    sim.cycle(1)
+    assert (sim.read("Main.pb"), sim.read("Main.same")) == ("ADR(a[2])", True)
+    assert (sim.read("Main.q"), sim.read("Main.b")) == ("ADR(a[2]) - 1", 0x01)
+
+
+def test_a_byte_other_than_0_or_1_read_as_a_bool_is_a_located_fault():
+    """A BOOL is 0 or 1; CODESYS shows any other byte as INVALID (Beckhoff's CODESYS 2.3 manual, "BOOL"), so b = 1
+    reads TRUE, 0 FALSE and 2 is a fault at the read (it read TRUE before)."""
+    sim = simulation("b : BYTE := 1; pb : POINTER TO BOOL; x : BOOL;", "pb := ADR(b);\nx := pb^;")
+    sim.cycle(1)
+    assert (sim.fault, sim.read("Main.x")) == (None, True)
+    sim.write("Main.b", 0)
+    sim.cycle(1)
+    assert (sim.fault, sim.read("Main.x")) == (None, False)
+    sim.write("Main.b", 2)
+    sim.cycle(1)
+    assert (sim.fault.code, sim.fault.message) == (
+        "index_out_of_range",
+        "reading through a pointer gives the byte 02 for a BOOL, which is neither 0 nor 1",
+    )
+    assert (sim.fault.origin.line, sim.read("Main.x")) == (7, False)  # TYPES, PROGRAM, VAR, decls, END_VAR, pb :=

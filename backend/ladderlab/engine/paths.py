@@ -51,7 +51,9 @@ class UnknownPath(KeyError):
 
 
 class NoTarget(ValueError):
-    """A path through a pointer that is NULL (or points outside its array) now: it names no variable."""
+    """A path through a pointer that is NULL (or points outside its array) now: it names no variable; or one through
+    a pointer seeing other memory (engine/codegen/views.py) whose bytes hold no value of its type, or cannot hold the
+    value written (a subrange left, a BOOL byte of 2)."""
 
 
 @dataclass(frozen=True)
@@ -114,11 +116,29 @@ class Location:
 
     def get(self, roots: Roots) -> object:
         container, key = self._container(roots)
-        return container[key]  # type: ignore[index]
+        try:
+            return container[key]  # type: ignore[index]
+        except PlcRuntimeError as error:  # through a pointer that sees other memory
+            raise NoTarget(f"{self.path}: {error.message}") from None
 
     def set(self, roots: Roots, value: object) -> None:
         container, key = self._container(roots, writing=True)
-        container[key] = value  # type: ignore[index]
+        try:
+            container[key] = value  # type: ignore[index]
+        except PlcRuntimeError as error:  # as above
+            raise NoTarget(f"{self.path}: {error.message}") from None
+
+    def trial(self, roots: Roots, value: object) -> None:
+        """NoTarget when writing ``value`` here now would fault (through a pointer that sees other memory: a
+        subrange left, a BOOL byte of 2); writes nothing, so a user's write is refused when it is given."""
+        container, key = self._container(roots, writing=True)
+        trial = getattr(container, "trial", None)  # a views.ViewRef (its pair is (the view, "v")) or what it sees
+        if trial is None:
+            return
+        try:
+            trial(key, value)
+        except PlcRuntimeError as error:
+            raise NoTarget(f"{self.path}: {error.message}") from None
 
     def reference(self, roots: Roots) -> tuple[object, object]:
         """A VAR_IN_OUT reference ``(container, key)`` to this location, as generated code passes one."""

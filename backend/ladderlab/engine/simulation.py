@@ -892,9 +892,10 @@ class Simulation:
         fault without a value gets the variable's value now, so the event alone says what it holds."""
         if event.kind in ("write", "force", "panel"):
             assert location is not None  # ``check`` made sure these kinds name a variable
-            if location.through_pointer:
-                location.get(self._roots)  # NoTarget (a ValueError: refused) while the pointer is NULL
-            return event, coerce_for(location, event.value)
+            value = coerce_for(location, event.value)
+            if location.through_pointer:  # NoTarget (a ValueError: refused) while the pointer is NULL, or when what
+                location.trial(self._roots, value)  # it points to cannot hold the value (engine/codegen/views.py)
+            return event, value
         if event.kind != "fault":
             return event, None
         assert location is not None

@@ -3,7 +3,8 @@ type (``POINTER TO BYTE`` over a STRING, ``POINTER TO DWORD`` over a REAL). The 
 from the value (engine/codegen/views.py); the specs here are what it is given.
 
 A spec is ``("int", size, signed)`` for the integers and bit strings, ``("real", size)``, ``("bool",)`` (one byte),
-``("string", n)`` (STRING[n]: n + 1 bytes, a NUL after the text), ``("array", count, element spec)`` (the elements
+``("string", n)`` (STRING[n]: n + 1 bytes, a NUL after the text), ``("range", low, high, base spec)`` (a subrange:
+its base's bytes, which must decode to low..high), ``("array", count, element spec)`` (the elements
 one after another; a multi-dimensional array is an array of arrays, the first dimension outermost) or
 ``("struct", name, size, pack_mode, ((member, offset, spec), ...))`` (a STRUCT: its members in declaration order
 at CODESYS's alignment, padding bytes between and after them; pack_mode as declared, None without one).
@@ -38,7 +39,8 @@ def byte_layout(ty: IrType) -> Spec | str:
 def _layout(ty: IrType, default: int) -> Spec | str:
     """The spec of ``ty`` on a target whose STRUCTs without a pack_mode have the pack mode ``default``."""
     if isinstance(ty, Subrange):
-        return _layout(ty.base, default)
+        base = _layout(ty.base, default)
+        return ("range", ty.low, ty.high, base) if isinstance(base, tuple) else base
     if isinstance(ty, Elementary):
         info = ty.info
         if info.category in ("int", "bits"):
@@ -66,15 +68,57 @@ def _layout(ty: IrType, default: int) -> Spec | str:
     return f"{article(describe(ty))} (it has no byte layout)"
 
 
-def seen_layout(ty: IrType) -> Spec | str:
-    """The spec of what a pointer of another type sees (``pt^``), or why it cannot: no STRUCT, whose members the
-    generated code reaches on the STRUCT's own value, never on bytes decoded into a copy."""
-    spec = element = byte_layout(ty)
-    while isinstance(element, tuple) and element[0] == "array":
-        element = element[2]
-    if isinstance(element, tuple) and element[0] == "struct":
-        return f"the STRUCT {element[1]} (a pointer of another type may see a STRUCT's bytes, not other bytes as one)"
-    return spec
+def same_target(referred: IrType, target: IrType) -> bool:
+    """A reference to ``target`` reaches a variable of ``referred`` directly: one type (STRING lengths aside). A
+    subrange and its base differ: a write through a base-typed pointer must not leave the subrange, a read through a
+    subrange-typed one must not return a value outside it, so those go through a view."""
+    if referred == target:
+        return True
+    return isinstance(referred, Elementary) and isinstance(target, Elementary) and referred.name == target.name
+
+
+def view_specs(referred: IrType, target: IrType) -> tuple[Spec, Spec] | str:
+    """``(whole, seen)``: the byte layouts through which a ``REF_TO target`` sees a variable of ``referred``, or why
+    it cannot (the message of the refusal)."""
+    whole, seen = byte_layout(referred), byte_layout(target)
+    if isinstance(whole, tuple) and isinstance(seen, tuple):
+        return whole, seen
+    problem = whole if isinstance(whole, str) else seen
+    return f"a REF_TO {describe(target)} cannot see {article(describe(referred))} as bytes: {problem}"
+
+
+def in_out_view(argument: IrType, parameter: IrType) -> tuple[Spec, Spec] | str | None:
+    """How a VAR_IN_OUT of type ``parameter`` reaches the variable ``argument`` passed to it: directly (None); through
+    a view (its specs) when the two are one integer type but for a subrange (``INT`` and ``INT (0..100)``), which
+    keeps the variable in its range; or not at all (why): an array whose elements differ so, which the callee would
+    reach element by element unchecked."""
+    if argument == parameter:
+        return None
+    if isinstance(argument, Elementary | Subrange) and isinstance(parameter, Elementary | Subrange):
+        whole, seen = byte_layout(argument), byte_layout(parameter)
+        same_base = _base(argument) == _base(parameter)
+        return (whole, seen) if same_base and isinstance(whole, tuple) and isinstance(seen, tuple) else None
+    elements = _innermost(argument), _innermost(parameter)
+    if elements[0] != elements[1] and any(isinstance(element, Subrange) for element in elements):
+        return (
+            f"{article(describe(argument))} cannot be passed to a VAR_IN_OUT {describe(parameter)}: the subrange of "
+            "its elements would go unchecked (pass an array of the parameter's element type)"
+        )
+    return None
+
+
+def has_subrange(ty: IrType) -> bool:
+    """``ty`` is a subrange or an array of them."""
+    return isinstance(ty, Subrange) or (isinstance(ty, Array) and has_subrange(ty.element))
+
+
+def _innermost(ty: IrType) -> IrType:
+    """An array's element type, through every dimension; ``ty`` itself for anything else."""
+    return _innermost(ty.element) if isinstance(ty, Array) else ty
+
+
+def _base(ty: Elementary | Subrange) -> Elementary:
+    return ty.base if isinstance(ty, Subrange) else ty
 
 
 def _struct_layout(ty: Struct, default: int) -> Spec | str:
@@ -100,6 +144,8 @@ def _alignment(spec: Spec, default: int) -> int:
     kind = spec[0]
     if kind in ("int", "real"):
         return spec[1]
+    if kind == "range":
+        return _alignment(spec[3], default)
     if kind == "array":
         return _alignment(spec[2], default)
     if kind == "struct":
@@ -132,6 +178,8 @@ def _spec_size(spec: Spec) -> int:
         return spec[1]
     if kind == "string":
         return spec[1] + 1
+    if kind == "range":
+        return _spec_size(spec[3])
     if kind == "array":
         return spec[1] * _spec_size(spec[2])
     return spec[2] if kind == "struct" else 1

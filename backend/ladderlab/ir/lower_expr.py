@@ -36,7 +36,7 @@ from ..st.methods import is_self, is_super
 from ..st.printer import print_expression
 from ..st.rules import EnumValue
 from ..st.symbols import PouInfo, PropertyRef, Symbol
-from .byte_layout import byte_layout, seen_layout
+from .byte_layout import has_subrange, same_target, view_specs
 from .codesys_dates import in_seconds
 from .context import PouContext
 from .lower_types import LoweringError, byte_size, engine_value, ir_default
@@ -150,7 +150,7 @@ def interface_value(node: ast.Expr, ctx: PouContext, target: Reference) -> Expr:
     return AddressOf(lower_access(node, ctx), target, print_expression(node))
 
 
-def _reference_to(expr: Expr, target: Reference, node: ast.Expr) -> Expr:
+def _reference_to(expr: Expr, target: Reference, node: ast.Expr | None) -> Expr:
     """A reference stored as a reference to ``target.target``: NULL, one to a variable of that very type, or a
     ``View`` of the variable's bytes as that type (a ``POINTER TO BYTE`` over a STRING: ir/byte_layout.py) when
     both types have a byte layout."""
@@ -158,25 +158,12 @@ def _reference_to(expr: Expr, target: Reference, node: ast.Expr) -> Expr:
         return Const(None, target)
     if not isinstance(expr.type, Reference):
         raise LoweringError(f"a {_reference_text(target)} cannot refer to {_referred_text(expr.type)}", node)
-    if _same_target(expr.type.target, target.target):
+    if same_target(expr.type.target, target.target):
         return expr
-    if isinstance(expr, Binary) and isinstance(seen_layout(expr.type.target), str):
-        # ``ADR(rec) + 2`` as a POINTER TO BYTE: the same address as ADR(rec) seen as bytes, moved by 2 (CODESYS
-        # moves by bytes whatever the pointer's type); a pointer to the STRUCT itself moves by whole STRUCTs only
-        return Binary(expr.op, _reference_to(expr.left, target, node), expr.right, target)  # type: ignore[arg-type]  # a pointer move
-    whole, seen = byte_layout(expr.type.target), seen_layout(target.target)
-    for problem in (whole, seen):
-        if isinstance(problem, str):
-            raise LoweringError(
-                f"a {_reference_text(target)} cannot see {_referred_text(expr.type)} as bytes: {problem}", node
-            )
-    return View(expr, target, whole, seen)  # type: ignore[arg-type]  # both specs (checked above)
-
-
-def _same_target(a: IrType, b: IrType) -> bool:
-    return value_type(a) == value_type(b) or (
-        isinstance(a, Elementary) and isinstance(b, Elementary) and a.name == b.name  # STRING[n] and STRING[m]
-    )
+    specs = view_specs(expr.type.target, target.target)
+    if isinstance(specs, str):
+        raise LoweringError(specs, node)
+    return View(expr, target, *specs)
 
 
 def _reference_text(ty: Reference) -> str:
@@ -188,6 +175,8 @@ def _referred_text(ty: IrType) -> str:
 
 
 def convert(expr: Expr, target: IrType) -> Expr:
+    """``expr`` stored in ``target``: a ``Convert`` for an accepted widening; a reference copied into a reference
+    whose target differs from its own by a subrange (an output ``q => p``) sees its variable through a view."""
     source = expr.type
     if source is target:  # the common case: lowered types are mostly shared instances
         return expr
@@ -197,6 +186,12 @@ def convert(expr: Expr, target: IrType) -> Expr:
         and value_type(source) != value_type(target)
     ):
         return Convert(expr, value_type(source), value_type(target))
+    if (
+        isinstance(source, Reference)
+        and isinstance(target, Reference)
+        and (has_subrange(source.target) or has_subrange(target.target))
+    ):
+        return _reference_to(expr, target, None)
     return expr
 
 
@@ -594,17 +589,32 @@ def lower_input(value: ast.Expr, ctx: PouContext, ty: IrType) -> Expr:
     return lower_to(value, ctx, ty)
 
 
-def address_of(value: ast.Expr, ty: IrType, text: str, ctx: PouContext) -> AddressOf:
-    """A reference of type ``ty`` to the variable ``value`` (the checker refused temporaries); ``text`` shows it."""
-    return AddressOf(lower_access(value, ctx), ty, text)
+def address_of(value: ast.Expr, ty: Reference, text: str, ctx: PouContext) -> Expr:
+    """A reference of type ``ty`` to the variable ``value`` (``r REF= x``, a REFERENCE TO input given ``x``): seen
+    through a view when ``x`` is of another type as far as subranges go (``_reference_to``)."""
+    return _reference_to(_reference_of(value, ty, text, ctx), ty, value)
+
+
+def _reference_of(value: ast.Expr, ty: IrType, text: str, ctx: PouContext) -> AddressOf:
+    """A reference to the variable ``value`` (the checker refused temporaries) typed ``ty``, the checker's type, but
+    for a variable with a subrange (or an array of one), whose own type it is: the checker's loses the range, which a
+    reference to the base type must then keep (``_reference_to``); ``text`` shows it."""
+    var = lower_access(value, ctx)
+    return AddressOf(var, Reference(var.type) if has_subrange(var.type) else ty, text)
+
+
+def retarget(expr: Expr, target: Reference, node: ast.Expr) -> Expr:
+    """``expr``, lowered as a reference of the checker's type (a subrange's base), as one of the declared ``target``
+    (the subrange), which may need a view the checker's type did not."""
+    return _reference_to(expr.value if isinstance(expr, View) else expr, target, node)
 
 
 def _address_of(node: ast.Call, ctx: PouContext) -> AddressOf:
-    """``REF(x)`` / ``ADR(x)``: a reference to the variable ``x`` (the checker refused temporaries)."""
+    """``REF(x)`` / ``ADR(x)``: a reference to the variable ``x``."""
     if len(node.args) != 1:
         raise LoweringError(None)
     text = f"{node.callee.name.upper()}({print_expression(node.args[0].value)})"  # type: ignore[union-attr]  # a Name
-    return address_of(node.args[0].value, ctx.ir_type(node.ty), text, ctx)
+    return _reference_of(node.args[0].value, ctx.ir_type(node.ty), text, ctx)
 
 
 def _sizeof(node: ast.Call, ctx: PouContext, target: IrType) -> Const:

@@ -17,6 +17,7 @@ from ..st import types as t
 from ..st.methods import SUPER, is_self
 from ..st.printer import print_expression
 from ..st.symbols import PouInfo, PropertyRef, Symbol
+from .byte_layout import has_subrange
 from .context import PouContext
 from .lower_expr import (
     address_of,
@@ -30,6 +31,7 @@ from .lower_expr import (
     lower_to,
     program_instance,
     property_call,
+    retarget,
     std_call,
     user_call,
     value_type,
@@ -59,7 +61,7 @@ from .nodes import (
     While,
     member,
 )
-from .types import BOOL, IrType
+from .types import BOOL, IrType, Reference
 
 
 def lower_st_body(pou: ModelPou, ctx: PouContext) -> list[Block]:
@@ -123,7 +125,10 @@ def _assign(statement: ast.Assign, ctx: PouContext) -> list[Stmt]:
             fb.name.upper() for fb in blocks if fb.kind == "FUNCTION_BLOCK" and fb.implements(target.ty.info)
         )
         lowered = Attempt(lowered, implementing, lowered.type)
-    return [Assign(lower_access(target, ctx), lowered, origin)]
+    place = lower_access(target, ctx)
+    if isinstance(place.type, Reference) and has_subrange(place.type.target):  # the checker's type lost the range
+        lowered = retarget(lowered, place.type, value)
+    return [Assign(place, lowered, origin)]
 
 
 def _ref_assign(statement: ast.RefAssign, ctx: PouContext) -> list[Stmt]:

@@ -17,6 +17,7 @@ Tuples keep the frozen IR types (``StructField.initial``) hashable.
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import math
 from typing import Any
@@ -30,7 +31,7 @@ from ..st.body import BodyChecker
 from ..st.printer import print_expression
 from ..st.rules import EnumValue, constant_value
 from ..st.symbols import CheckResult, PouInfo, Symbol, TypeDef
-from .byte_layout import byte_layout
+from .byte_layout import byte_layout, same_target, view_specs
 from .nodes import ReferenceInit, Slot
 from .types import (
     Array,
@@ -251,7 +252,7 @@ class TypeLowering:
         if getattr(node, "ty", None) is t.ERROR:
             raise LoweringError(None)
         if isinstance(target, Reference):
-            return _reference_initial(node)
+            return self._reference_start(node, target)
         raw = self.raw_constant(node)
         if raw is None:
             raise LoweringError(
@@ -260,6 +261,28 @@ class TypeLowering:
                 code="IR-INIT",
             )
         return engine_value(raw, target)
+
+    def _reference_start(self, node: ast.Expr, target: Reference) -> ReferenceInit | None:
+        """``_reference_initial``, seeing its variable through a view (engine/codegen/views.py) when it is not of
+        the reference's target type: ``p : POINTER TO BYTE := ADR(str)`` walks the STRING's bytes, ``p : POINTER TO
+        INT := ADR(pct)`` keeps ``pct`` in its subrange (as the same assignment in the body does: lower_expr)."""
+        start = _reference_initial(node)
+        if start is None:
+            return None
+        assert isinstance(node, ast.Call)  # REF(x) / ADR(x) (_reference_initial)
+        value = node.args[0].value
+        name = value.base if isinstance(value, ast.Index) else value
+        assert isinstance(name, ast.Name) and isinstance(name.ref, Symbol)
+        symbol = name.ref
+        referred = self.type_of(symbol.type, symbol.type_spec)
+        if start.index and isinstance(referred, Array) and len(referred.dims) == len(start.index):
+            referred = referred.element
+        if same_target(referred, target.target) or isinstance(referred, FbInstance):  # (an FB: the checker's call)
+            return start
+        specs = view_specs(referred, target.target)
+        if isinstance(specs, str):
+            raise LoweringError(specs, node)
+        return dataclasses.replace(start, view=specs)
 
     def raw_constant(self, node: Any, depth: int = 0) -> object:
         """The Python value of a constant expression before it is stored in a type; None when not constant."""

@@ -367,12 +367,14 @@ VarClass = Literal["VAR", "VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT", "VAR_EXTERNAL
 class ReferenceInit:
     """The initial value ``REF(x)`` of a reference slot: the whole variable ``name`` of this POU (``local``) or a
     global, or its array element ``x[index]`` (constant indices, as declared), made after every other slot is
-    initialised (``text`` as written, shown online)."""
+    initialised (``text`` as written, shown online); ``view``: the ``(whole, seen)`` byte layouts (ir/byte_layout.py)
+    through which it sees a variable of another type, None for one of its own."""
 
     name: str
     scope: Scope
     text: str
     index: tuple[int, ...] = ()
+    view: tuple[tuple, tuple] | None = None
 
 
 @dataclass(slots=True)

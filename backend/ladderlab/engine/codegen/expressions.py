@@ -16,7 +16,7 @@ from functools import cache, lru_cache
 from ...iec import values
 from ...ir import nodes as ir
 from ...ir import types as t
-from ...ir.byte_layout import seen_layout
+from ...ir.byte_layout import byte_layout, in_out_view
 from ...ir.lower_types import byte_size
 from ...ir.types import describe
 from ..stdlib import specialised
@@ -25,7 +25,7 @@ from .context import CodegenError, std_fb_class, std_pin_type
 from .mentions import calls_in, var_text
 from .scope import Scope
 from .source import Source
-from .typeinfo import is_composite, runtime_name, store_code, store_value
+from .typeinfo import is_composite, runtime_name, store_code, store_value, store_whole
 
 _OPERATOR_FUNCTIONS = {
     op: op for op in ("ADD", "SUB", "MUL", "DIV", "MOD", "EXPT", "AND", "OR", "XOR", "EQ", "NE", "LT", "LE", "GT", "GE")
@@ -163,7 +163,7 @@ class Expressions:
         if isinstance(b.type, t.Reference):  # p + n, p - n: bytes along the array p points into (runtime.pointer_add)
             offset = right if b.op == "ADD" else f"-({right})"
             what = f"the pointer {var_text(b.left)}" if isinstance(b.left, ir.Var) else "the pointer"
-            spec = seen_layout(b.type.target)
+            spec = byte_layout(b.type.target)
             layout = spec if isinstance(spec, tuple) else None  # none to see: whole elements only
             return f"ll_ptr_add({left}, {offset}, {byte_size(b.type.target)}, {what!r}, {layout!r})"
         if isinstance(b.left.type, t.Reference) and b.op in ("EQ", "NE"):  # one variable referred to, or both NULL
@@ -210,16 +210,26 @@ class Expressions:
             return f"ll_io_ref(r_{names.escape(slot.name)}, *{ref}, {a.text!r})"
         return f"ll_Ref(*{ref}, {a.text!r})"
 
-    def in_out_argument(self, v: ir.Var) -> str:
-        """``ref(v)`` passed to a VAR_IN_OUT; a variable of this call that has a frame passes it along
-        (``runtime.FramedPair``), so a REF() the callee takes of its in-out dies with this call."""
+    def in_out_argument(self, v: ir.Var, parameter: t.IrType) -> str:
+        """``ref(v)`` passed to a VAR_IN_OUT of type ``parameter``; a variable of this call that has a frame passes it
+        along (``runtime.FramedPair``), so a REF() the callee takes of its in-out dies with this call. A subrange
+        passed for its base (or the other way round) is passed as a view's ``(view, "v")`` that keeps the variable
+        in its range, as a pointer of the base type does (engine/codegen/views.py)."""
         code = self.ref(v)
         own = v.scope == "local" and not any(isinstance(selector, ir.Deref) for selector in v.path)
-        return f"ll_Pair(*{code}, ll_fr)" if own and v.name.upper() in self.scope.framed else code
+        framed = own and v.name.upper() in self.scope.framed
+        specs = in_out_view(v.type, parameter)
+        if isinstance(specs, str):
+            raise CodegenError(specs)
+        if specs is not None:
+            text = f"the VAR_IN_OUT argument {var_text(v)}"
+            ref = f"ll_FrameRef(*{code}, {text!r}, ll_fr)" if framed else f"ll_Ref(*{code}, {text!r})"
+            return f"ll_seen({ref}, {specs[0]!r}, {specs[1]!r}).pair"
+        return f"ll_Pair(*{code}, ll_fr)" if framed else code
 
     def view(self, v: ir.View) -> str:
         """A pointer seeing its target's bytes as another type (engine/codegen/views.py)."""
-        return f"ll_view({self.expr(v.value)}, {v.whole!r}, {v.seen!r})"
+        return f"ll_seen({self.expr(v.value)}, {v.whole!r}, {v.seen!r})"
 
     def attempt(self, a: ir.Attempt) -> str:
         """``?=``: the reference when its instance's class is one of the FBs implementing the interface, else NULL."""
@@ -288,7 +298,7 @@ class Expressions:
                 f"the call passes {len(c.args)} and {len(c.in_outs)}"
             )
         args = [self.value_for(a, slot.type) for a, slot in zip(c.args, inputs)]
-        args += [self.in_out_argument(v) for v in c.in_outs]
+        args += [self.in_out_argument(v, slot.type) for v, slot in zip(c.in_outs, in_outs)]
         if c.virtual and c.function.upper() in self.module.program.dispatch:  # a method: by its instance's FB
             call = f"ll_virtual({names.dispatch_table(callee.name)}, {len(inputs)}, {', '.join(args)})"
         else:
@@ -300,7 +310,7 @@ class Expressions:
         if is_composite(target):
             if isinstance(target, t.FbInstance):
                 raise CodegenError("an FB instance cannot be passed by value")
-            return f"ll_copy({self.expr(e)})"
+            return f"ll_copy({store_whole(self.expr(e), e.type, target)})"
         return self.stored(e, target)
 
     def stored(self, e: ir.Expr, target: t.IrType) -> str:

@@ -129,7 +129,10 @@ def emit_reference_inits(module: ModuleContext, layout, holder, src: Source) -> 
         if initial.index:  # an array element: the list of its last dimension and its offset there
             container = f"{owner}.{target.attr}" + "".join(f"[{o}]" for o in _offsets(target.slot, initial)[:-1])
             key = str(_offsets(target.slot, initial)[-1])
-        src.line(f"{holder(place.page)}.{place.attr} = ll_Ref({container}, {key}, {initial.text!r})")
+        ref = f"ll_Ref({container}, {key}, {initial.text!r})"
+        if initial.view is not None:
+            ref = f"ll_seen({ref}, {initial.view[0]!r}, {initial.view[1]!r})"
+        src.line(f"{holder(place.page)}.{place.attr} = {ref}")
 
 
 def _offsets(array: ir.Slot, initial: ir.ReferenceInit) -> list[int]:

@@ -109,6 +109,17 @@ class Structure(Addressable):
                 setattr(self, name, getattr(source, name))
 
 
+class Seen:
+    """Base of ``views.ArrayView`` and ``views.StructView`` (an array or a STRUCT seen over other memory through a
+    pointer): passed by value, it is copied into a list or a structure of its members' values, never shared with the
+    memory it sees."""
+
+    __slots__ = ()
+
+    def ll_copy(self) -> object:
+        raise NotImplementedError
+
+
 def is_composite_value(value: object) -> bool:
     return value.__class__ is list or isinstance(value, Structure)
 
@@ -119,7 +130,7 @@ def deep_copy(value):
         if value and is_composite_value(value[0]):
             return [deep_copy(v) for v in value]
         return value[:]
-    if isinstance(value, Structure):
+    if isinstance(value, Structure | Seen):
         return value.ll_copy()
     return value
 
@@ -134,6 +145,17 @@ def assign_into(target, source) -> None:
             target[:] = source
     else:
         target.ll_assign(source)
+
+
+def in_range(value, low: int, high: int):
+    """``value``, an array (nested lists) assigned whole into an array of the subrange low..high, once every element
+    lies in it; the first that does not is the fault of a direct assignment (``check_subrange``)."""
+    for element in value:
+        if element.__class__ is list:
+            in_range(element, low, high)
+        else:
+            check_subrange(element, low, high)
+    return value
 
 
 def with_values(obj, **attributes):
@@ -441,6 +463,7 @@ def namespace() -> dict[str, object]:
     ns.update(
         ll_ix=check_index,
         ll_sub=check_subrange,
+        ll_in_range=in_range,
         ll_fit=check_fit,
         ll_copy=deep_copy,
         ll_assign=assign_into,
@@ -456,7 +479,7 @@ def namespace() -> dict[str, object]:
         ll_deref=deref,
         ll_ptr_add=pointer_add,
         ll_ptr_order=pointer_order,
-        ll_view=view,
+        ll_seen=view,  # (not ll_view: a monitored network's local, statements.py)
         ll_inf=math.inf,
         ll_nan=math.nan,
         ll_Addressable=Addressable,

@@ -36,7 +36,7 @@ from .mentions import calls_in, expression_vars, nested, walk
 from .runtime import UNSET
 from .scope import Scope
 from .source import Source
-from .typeinfo import is_composite, runtime_name, store_code
+from .typeinfo import is_composite, runtime_name, store_code, store_whole
 
 
 class Statements:
@@ -357,7 +357,7 @@ class Statements:
         if isinstance(ty, t.FbInstance):
             raise CodegenError("an FB instance cannot be assigned")
         if is_composite(ty):
-            self.src.line(f"ll_assign({code}, {self.x.expr(value)})")
+            self.src.line(f"ll_assign({code}, {store_whole(self.x.expr(value), value.type, ty)})")
             forward.clear()
             return
         stored = self.x.stored(value, ty)
@@ -799,14 +799,14 @@ class Statements:
             if slot.var_class == "VAR_IN_OUT":
                 if not isinstance(value, ir.Var):
                     raise CodegenError(f"VAR_IN_OUT {pin} needs a variable")
-                self.src.line(f"{owner}.{attr} = {self.x.in_out_argument(value)}")
+                self.src.line(f"{owner}.{attr} = {self.x.in_out_argument(value, slot.type)}")
                 return None
             if slot.var_class != "VAR_INPUT":
                 raise CodegenError(f"{pin} is not an input of {user.name}")
         elif pin.upper() not in std_fb_class(ty.fb).INPUTS:  # type: ignore[union-attr]
             raise CodegenError(f"{pin} is not an input of {ty.fb}")
         if is_composite(pin_type):
-            self.src.line(f"ll_assign({owner}.{attr}, {self.x.expr(value)})")
+            self.src.line(f"ll_assign({owner}.{attr}, {store_whole(self.x.expr(value), value.type, pin_type)})")
             return None
         code = self.x.stored(value, pin_type)
         self.src.line(f"{owner}.{attr} = {code}")
@@ -818,7 +818,7 @@ class Statements:
         """Copy an FB output pin or a call result into ``target``; ``checked``: already stored in ``source_type``."""
         code, ty = self.x.access(target)
         if is_composite(ty):
-            self.src.line(f"ll_assign({code}, {source})")
+            self.src.line(f"ll_assign({code}, {store_whole(source, source_type, ty)})")
         else:
             self._set(code, store_code(source, source_type, ty, checked=checked), probe)
 

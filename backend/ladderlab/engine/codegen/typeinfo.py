@@ -97,3 +97,15 @@ def store_code(code: str, source: t.IrType, target: t.IrType, *, checked: bool =
     if same_storage(source, target) or is_composite(target) or isinstance(target, t.Enum):
         return code
     return values.store_expr(code, runtime_name(target))  # type: ignore[arg-type]
+
+
+def store_whole(code: str, source: t.IrType, target: t.IrType) -> str:
+    """Source of the array value ``code`` (of type ``source``) assigned whole into ``target``: each element checked
+    (``ll_in_range``) when ``target``'s elements are a subrange that ``source``'s are not (``ARRAY OF INT`` into
+    ``ARRAY OF INT (0..100)``); structures and other arrays as they are."""
+    element, given = target, source
+    while isinstance(element, t.Array) and isinstance(given, t.Array):
+        element, given = element.element, given.element
+    if isinstance(element, t.Subrange) and given != element:
+        return f"ll_in_range({code}, {element.low!r}, {element.high!r})"
+    return code

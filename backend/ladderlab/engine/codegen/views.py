@@ -4,9 +4,13 @@ LadderLab keeps values as Python objects, not bytes; a view reads and writes the
 would hold, little-endian, computed from the value on each access: ``Layout.read`` encodes only the part of the
 variable the access covers, ``Layout.write`` splices new bytes in and decodes the variable again. A write whose
 bytes the variable cannot hold exactly (a BOOL byte of 2, a character after a STRING's terminator, a STRUCT's
-padding byte other than 0) is a fault, so no value changes other than the bytes written. The layouts come from
+padding byte other than 0) is a fault, so no value changes other than the bytes written; so is reading a byte other
+than 0 or 1 as a BOOL (CODESYS's BOOL is 0 or 1, any other byte it shows as INVALID). The layouts come from
 the lowering as specs (ir/byte_layout.py): ``("int", size, signed)``, ``("real", size)``, ``("bool",)``,
-``("string", n)``, ``("array", count, element spec)``, ``("struct", name, size, pack_mode, members)``.
+``("string", n)``, ``("range", low, high, base spec)``, ``("array", count, element spec)``,
+``("struct", name, size, pack_mode, members)``. A subrange's bytes must decode into its range: a write through a
+pointer of its base type (``POINTER TO INT`` over an ``INT (0..100)``) and a read through a pointer to a subrange
+over a variable of its base type fault ``subrange_violation`` outside it, naming the pointer (``ADR(v)``).
 """
 
 from __future__ import annotations
@@ -15,9 +19,9 @@ import functools
 import struct
 from typing import Any
 
-from ..errors import INDEX_RANGE, PlcRuntimeError, null_dereference, pointer_outside_bytes
+from ..errors import INDEX_RANGE, SUBRANGE, PlcRuntimeError, check_subrange, null_dereference, pointer_outside_bytes
 from . import names
-from .runtime import Ref, dangling
+from .runtime import ElementRef, Ref, Seen, Structure, dangling, deep_copy
 
 _INT_FORMATS = {(1, False): "<B", (1, True): "<b", (2, False): "<H", (2, True): "<h"}
 _INT_FORMATS |= {(4, False): "<I", (4, True): "<i", (8, False): "<Q", (8, True): "<q"}
@@ -38,7 +42,12 @@ class Scalar:
 
     def decode(self, data: bytes) -> Any:
         value = self.codec.unpack(data)[0]
-        return value != 0 if self.kind == "bool" else value
+        if self.kind != "bool":
+            return value
+        if value not in (0, 1):  # CODESYS's BOOL is 0 or 1; it shows any other byte as INVALID
+            what = f"the byte {value:02x} for a BOOL, which is neither 0 nor 1"
+            raise PlcRuntimeError(INDEX_RANGE, f"reading through a pointer gives {what}")
+        return value == 1
 
     def read(self, value: Any, offset: int, size: int) -> bytes:
         return self.codec.pack(value)[offset : offset + size]
@@ -46,10 +55,31 @@ class Scalar:
     def write(self, value: Any, offset: int, data: bytes) -> Any:
         whole = bytearray(self.codec.pack(value))
         whole[offset : offset + len(data)] = data
+        if self.kind == "bool" and whole[0] > 1:
+            raise _not_kept(f"the bytes {bytes(whole).hex()} for a {self.kind}")
         new = self.decode(bytes(whole))
-        if self.codec.pack(new) != whole:  # a BOOL byte other than 0 / 1, a REAL NaN payload Python cannot keep
+        if self.codec.pack(new) != whole:  # a REAL NaN payload Python cannot keep
             raise _not_kept(f"the bytes {bytes(whole).hex()} for a {self.kind}")
         return new
+
+
+class Ranged:
+    """A subrange of an integer type: its base's bytes, decoded and written only as a value in ``low..high``."""
+
+    def __init__(self, low: int, high: int, base: Scalar) -> None:
+        self.low, self.high, self.base, self.size = low, high, base, base.size
+
+    def encode(self, value: int) -> bytes:
+        return self.base.encode(value)
+
+    def decode(self, data: bytes) -> int:
+        return check_subrange(self.base.decode(data), self.low, self.high)
+
+    def read(self, value: int, offset: int, size: int) -> bytes:
+        return self.base.read(value, offset, size)
+
+    def write(self, value: int, offset: int, data: bytes) -> int:
+        return check_subrange(self.base.write(value, offset, data), self.low, self.high)
 
 
 class String:
@@ -126,6 +156,10 @@ class StructLayout:
             if low < high:
                 yield attribute, start, member, low, high
 
+    def encode(self, value: Any) -> bytes:
+        """All its bytes (``pt^ := rec`` over other memory): the members', and padding 0."""
+        return self.read(value, 0, self.size)
+
     def read(self, value: Any, offset: int, size: int) -> bytes:
         data = bytearray(size)
         for attribute, start, member, low, high in self._covered(offset, offset + size):
@@ -161,20 +195,26 @@ def layout(spec: tuple) -> Any:
         return String(spec[1])
     if kind == "struct":
         return StructLayout(spec[1], spec[2], spec[4])
+    if kind == "range":
+        return Ranged(spec[1], spec[2], layout(spec[3]))
     return ArrayLayout(spec[1], layout(spec[2]))
 
 
 class ViewRef(Ref):
     """A pointer that sees the variable ``(c, k)`` (laid out as ``whole``; ``k`` None: the array ``c`` itself) from
     byte ``offset`` on as a value of the ``seen`` layout. It may point one past the variable's end, not read or
-    write there; ``frame`` is the function call whose variable it is (runtime.Frame), None for any other."""
+    write there; ``frame`` is the function call whose variable it is (runtime.Frame), None for any other. ``origin``
+    is the REF()/ADR() it came from, which points at byte ``start``: its text is that origin moved by the rest."""
 
-    __slots__ = ("frame", "offset", "origin", "seen", "whole")
+    __slots__ = ("frame", "offset", "origin", "seen", "start", "whole")
 
-    def __init__(self, c: object, k: object, whole: Any, offset: int, seen: Any, origin: str, frame: Any) -> None:
-        moved = f" + {offset}" if offset else ""
-        super().__init__(c, k, origin + moved)
+    def __init__(
+        self, c: object, k: object, whole: Any, offset: int, seen: Any, origin: str, frame: Any, start: int = 0
+    ) -> None:
+        moved = offset - start
+        super().__init__(c, k, origin + (f" {'+' if moved > 0 else '-'} {abs(moved)}" if moved else ""))
         self.whole, self.offset, self.seen, self.origin, self.frame = whole, offset, seen, origin, frame
+        self.start = start
 
     def _target(self, size: int) -> object:
         """The variable, once the ``size`` bytes from ``offset`` on are known to lie inside it (and its call alive)."""
@@ -189,15 +229,39 @@ class ViewRef(Ref):
         if isinstance(self.seen, ArrayLayout):  # each element is checked when it is read or written
             self._target(0)
             return ArrayView(self, self.seen)
+        if isinstance(self.seen, StructLayout):  # each member is, as it is read or written
+            self._target(self.seen.size)
+            return StructView(self, self.seen)
         value = self._target(self.seen.size)
-        return self.seen.decode(self.whole.read(value, self.offset, self.seen.size))
+        try:
+            return self.seen.decode(self.whole.read(value, self.offset, self.seen.size))
+        except PlcRuntimeError as error:
+            raise self._through(error, "read") from None
 
     @v.setter
     def v(self, new: object) -> None:
         value = self._target(self.seen.size)
-        written = self.whole.write(value, self.offset, self.seen.encode(new))
+        try:
+            written = self.whole.write(value, self.offset, self.seen.encode(new))
+        except PlcRuntimeError as error:
+            raise self._through(error, "written") from None
         if self.k is not None and written is not value:
             self.c[self.k] = written  # type: ignore[index]  # as above
+
+    def trial(self, key: object, new: object) -> None:
+        """Fault as writing ``new`` would, on a copy: nothing is written (a user's write through the pointer, its
+        pair ``(self, key)``, is refused when it is given: engine/paths.py)."""
+        value = deep_copy(self._target(self.seen.size))
+        try:
+            self.whole.write(value, self.offset, self.seen.encode(new))
+        except PlcRuntimeError as error:
+            raise self._through(error, "written") from None
+
+    def _through(self, error: PlcRuntimeError, how: str) -> PlcRuntimeError:
+        """A subrange fault of a value met through this pointer, saying so (the direct assignment's words first)."""
+        if error.code != SUBRANGE:
+            return error
+        return PlcRuntimeError(SUBRANGE, f"{error.message}: {how} through {self.text}")
 
     @property
     def pair(self) -> tuple[object, object]:
@@ -205,6 +269,10 @@ class ViewRef(Ref):
         online path through a pointer outside its variable (or dangling) names no variable (engine/paths.py)."""
         self._target(0 if isinstance(self.seen, ArrayLayout) else self.seen.size)
         return (self, "v")
+
+    def at(self, offset: int, seen: Any) -> ViewRef:
+        """The view of the ``seen`` value ``offset`` bytes further on (an element, a member of what this one sees)."""
+        return ViewRef(self.c, self.k, self.whole, self.offset + offset, seen, self.origin, self.frame, self.start)
 
     def __getitem__(self, key: str) -> object:  # (self, "v") as a VAR_IN_OUT reference
         return self.v
@@ -221,18 +289,22 @@ class ViewRef(Ref):
         position = self.offset + offset
         if not 0 <= position <= self.whole.size:
             raise pointer_outside_bytes(f"{what} moved by {offset} bytes", position, 0, self.whole.size)
-        return ViewRef(self.c, self.k, self.whole, position, self.seen, self.origin, self.frame)
+        return ViewRef(self.c, self.k, self.whole, position, self.seen, self.origin, self.frame, self.start)
 
     def __eq__(self, other: object) -> bool:
         if isinstance(other, ViewRef):
             return other.c is self.c and other.k == self.k and other.offset == self.offset
-        return self.offset == 0 and isinstance(other, Ref) and other.c is self.c and other.k == self.k
+        if not isinstance(other, Ref) or other.c is not self.c:
+            return False
+        if self.k is None:  # the array c seen from one of its elements: ``other`` to that element
+            return isinstance(other.k, int) and other.k * self.whole.element.size == self.offset
+        return self.offset == 0 and other.k == self.k
 
     def __hash__(self) -> int:
         return hash((id(self.c), self.k, self.offset))
 
 
-class ArrayView:
+class ArrayView(Seen):
     """``pt^`` of a pointer to an array seen over other memory: ``pt^[i]`` reads and writes element i's bytes alone
     (OSCAT's ``REF_TO ARRAY[1..255] OF BYTE`` over a shorter STRING reads only the characters it indexes)."""
 
@@ -242,8 +314,7 @@ class ArrayView:
         self.ref, self.seen = ref, seen
 
     def _element(self, index: int) -> ViewRef:
-        ref, step = self.ref, self.seen.element.size
-        return ViewRef(ref.c, ref.k, ref.whole, ref.offset + index * step, self.seen.element, ref.origin, ref.frame)
+        return self.ref.at(index * self.seen.element.size, self.seen.element)
 
     def __getitem__(self, index: int) -> object:
         return self._element(index).v
@@ -254,8 +325,76 @@ class ArrayView:
     def __len__(self) -> int:
         return self.seen.count
 
+    def ll_copy(self) -> list:
+        """Its elements' values (a nested array seen: lists of them), for an array input passed ``pt^`` by value."""
+        return [deep_copy(value) for value in self]
+
+    def trial(self, index: int, new: object) -> None:
+        """``ViewRef.trial`` of element ``index`` (an online path ``pt^[i]``)."""
+        self._element(index).trial("v", new)
+
+    def ll_assign(self, source: list) -> None:
+        """``pt^ := arr``: each element's bytes written in turn (runtime.assign_into)."""
+        for index, value in enumerate(source):
+            self[index] = value
+
     def __iter__(self):
         return (self[i] for i in range(self.seen.count))
+
+
+class StructView(Seen):
+    """``pt^`` of a pointer to a STRUCT seen over other memory (CODESYS's ``POINTER TO Header := ADR(buffer)``):
+    ``pt^.m`` reads and writes member m's bytes alone, where the STRUCT's layout puts them (``StructLayout``); the
+    generated code reaches members by their attribute names, as on a ``Structure``."""
+
+    __slots__ = ("ref", "seen")
+
+    def __init__(self, ref: ViewRef, seen: StructLayout) -> None:
+        self.ref, self.seen = ref, seen
+
+    def _member(self, attribute: str) -> ViewRef:
+        for name, offset, member in self.seen.members:
+            if name == attribute:
+                return self.ref.at(offset, member)
+        raise AttributeError(attribute)
+
+    def __getattr__(self, attribute: str) -> object:
+        return self._member(attribute).v
+
+    def __setattr__(self, attribute: str, value: object) -> None:
+        if attribute in StructView.__slots__:
+            object.__setattr__(self, attribute, value)
+        else:
+            self._member(attribute).v = value
+
+    def __getitem__(self, attribute: str) -> object:  # (view, member) as a VAR_IN_OUT reference or an online path
+        return self._member(attribute).v
+
+    def __setitem__(self, attribute: str, value: object) -> None:
+        self._member(attribute).v = value
+
+    def trial(self, attribute: str, new: object) -> None:
+        """``ViewRef.trial`` of a member (an online path ``pt^.m``)."""
+        self._member(attribute).trial("v", new)
+
+    def ll_assign(self, source: object) -> None:
+        """``pt^ := rec``: every byte of the STRUCT written at once, its members' and 0 for padding (assign_into)."""
+        self.ref.v = source
+
+    def ll_copy(self) -> Structure:
+        """Its members' values in a structure of their own, for a STRUCT input passed ``pt^`` by value."""
+        copy = _copy_class(self.seen)()
+        for name, _, _ in self.seen.members:
+            setattr(copy, name, deep_copy(self._member(name).v))
+        return copy
+
+
+@functools.cache
+def _copy_class(seen: StructLayout) -> type[Structure]:
+    """A structure class holding the members of ``seen`` (a by-value copy of a STRUCT seen over other memory reaches
+    them by the generated class's attribute names, the only part of it that code uses)."""
+    fields = tuple(name for name, _, _ in seen.members)
+    return type(f"Seen_{seen.name}", (Structure,), {"__slots__": fields, "ll_fields": fields})
 
 
 def view(ref: Ref | None, whole: tuple, seen: tuple) -> ViewRef | None:
@@ -265,14 +404,15 @@ def view(ref: Ref | None, whole: tuple, seen: tuple) -> ViewRef | None:
         return None
     seen_layout = layout(seen)
     if isinstance(ref, ViewRef):
-        return ViewRef(ref.c, ref.k, ref.whole, ref.offset, seen_layout, ref.origin, ref.frame)
+        return ViewRef(ref.c, ref.k, ref.whole, ref.offset, seen_layout, ref.origin, ref.frame, ref.start)
     element = layout(whole)
     frame = getattr(ref, "frame", None)
     if isinstance(ref.c, list) and isinstance(ref.k, int):
         array = ArrayLayout(len(ref.c), element)
-        origin = ref.origin if hasattr(ref, "origin") else ref.text
         offset = ref.k * element.size if 0 <= ref.k <= len(ref.c) else -1
-        return ViewRef(ref.c, None, array, offset, seen_layout, origin, frame)
+        if isinstance(ref, ElementRef):  # moved by arithmetic: its origin points ``moved`` bytes before it
+            return ViewRef(ref.c, None, array, offset, seen_layout, ref.origin, frame, offset - ref.moved)
+        return ViewRef(ref.c, None, array, offset, seen_layout, ref.text, frame, offset)
     return ViewRef(ref.c, ref.k, element, 0, seen_layout, ref.text, frame)
 
 
