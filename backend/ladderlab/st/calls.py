@@ -13,6 +13,7 @@ from typing import Any
 
 from ..iec import stdlib
 from ..iec.spelling import did_you_mean
+from ..iec.values import article
 from . import ast
 from . import types as t
 from .context_typing import default_type, untyped_leaves
@@ -312,7 +313,7 @@ def _in_out(checker: Any, arg: ast.Arg, param: Param, callee: str) -> None:
     elif not t.same(param.type, value) and not _open_array(param.type, value) and not _derived(param.type, value):
         checker.report(
             "ST-TYPE-MISMATCH",
-            f"in-out parameter {param.name} of {callee} needs a {param.type}, got {value}",
+            f"in-out parameter {param.name} of {callee} needs {article(str(param.type))}, got {value}",
             arg.value,
         )
 
