@@ -536,6 +536,38 @@ def test_element_subscriptions_name_existing_instances_and_elements(
         assert (error["code"], error["message"]) == ("bad_path", text)
 
 
+def test_an_unknown_name_in_a_subscription_is_refused_alone_and_the_rest_is_watched(
+    client: TestClient, motor_sim: str
+) -> None:
+    """ON-10: one pin the diagram draws and the program does not have (or a misspelt watch row) costs that item
+    only, with its reason; every other value and element of the client's views keeps updating."""
+    with client.websocket_connect(ws_url(motor_sim)) as ws:
+        recv(ws)
+        ws.send_json(
+            {
+                "type": "subscribe",
+                "paths": ["Start", "Strat", "Motor"],
+                "elements": [{"pou_instance": "Main", "ids": ["start", "strat", "motor"]}, {"pou_instance": "Mian"}],
+            }
+        )
+        reasons = []
+        for _ in range(3):
+            error, _ = recv_until(ws, of_type("error"))
+            reasons.append((error["code"], error["message"].split(" (elements")[0]))
+        assert reasons == [
+            ("bad_path", "unknown variable or program 'Strat'"),
+            ("bad_path", "Main (MAIN) has no element 'strat'"),
+            ("bad_path", "no POU instance 'Mian' - did you mean 'MAIN'?"),
+        ]
+        first, _ = recv_until(ws, of_type("values"))
+        assert first["power"] == {"Main/start": None, "Main/motor": None}
+        ws.send_json({"type": "write", "path": "Start", "value": True})
+        ws.send_json({"type": "single_cycle"})
+        values, _ = recv_until(ws, of_type("values", scan=1))
+        assert values["changed"] == {"START": True, "MOTOR": True}
+        assert values["power"]["Main/start"] is True and values["power"]["Main/motor"] is True
+
+
 def test_fbd_elements_and_fb_instances_can_be_watched(client: TestClient, motor_sim: str) -> None:
     client.post(f"/api/simulations/{motor_sim}/cycle")
     with client.websocket_connect(ws_url(motor_sim)) as ws:

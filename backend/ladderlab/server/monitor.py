@@ -263,7 +263,13 @@ class MonitorClient:
             )
         elements = [(e.pou_instance, e.ids) for e in request.elements]
         self.watch = await self.simulation.watch(self.key, request.paths, elements)
-        self.elements = [(e.pou_instance, e.pou_instance.strip().upper(), e.ids) for e in request.elements]
+        for reason in self.watch.refused:  # the rest of the subscription stands
+            self.error("bad_path", reason)
+        self.elements = [
+            (e.pou_instance, watched[0], None if watched[1] is None else list(watched[1]))
+            for e, watched in zip(request.elements, self.watch.elements, strict=True)
+            if watched is not None
+        ]
         self.interval_s = request.interval_ms / 1000.0
         self.full, self.next_due = True, self.loop.time()
         self.last_values, self.last_power = {}, {}

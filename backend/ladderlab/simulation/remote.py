@@ -89,7 +89,9 @@ class Watch:
     """One client's subscription as the simulation resolved it: canonical paths with how to show them."""
 
     paths: dict[str, DisplayType]
-    instances: tuple[str, ...] = ()
+    # per element request: (canonical instance, element ids watched or None for all), None where refused
+    elements: tuple[tuple[str, tuple[str, ...] | None] | None, ...] = ()
+    refused: tuple[str, ...] = ()  # why each unknown path, instance or element was left out (the rest is watched)
 
 
 class Listener(Protocol):
@@ -464,7 +466,8 @@ class SimulationHandle:
             self._watches[key] = request
         return Watch(
             {path: DisplayType.model_construct(**shown) for path, shown in answer["paths"].items()},
-            tuple(answer["instances"]),
+            tuple(None if e is None else (e[0], None if e[1] is None else tuple(e[1])) for e in answer["elements"]),
+            tuple(answer["refused"]),
         )
 
     def unwatch(self, key: int) -> None:

@@ -987,34 +987,49 @@ class SimRunner:
         """Set ``key``'s subscription (replacing its previous one); the next frame holds every watched value.
 
         ``elements``: (POU instance, element ids or None for all) whose states to publish. Returns the
-        canonical paths with their display types, and the canonical instances."""
+        canonical paths with their display types, per element request the canonical instance with the ids
+        watched (None: refused), and ``refused``: why each path, instance or element id that the simulation does
+        not know was left out. One unknown name in a
+        client's views (a pin the diagram draws and the program does not have) must not stop every other value."""
         locations: dict[str, Location] = {}
+        refused: list[str] = []
         for path in paths:
-            location = self._location(path)
+            try:
+                location = self._location(path)
+            except CommandError as error:
+                refused.append(error.message)
+                continue
             locations.setdefault(location.path, location)
-        watched = []
+        accepted: list[tuple[str, tuple[str, ...] | None] | None] = []  # one per element request, None: refused
         for instance, ids in elements:
             try:
                 self.sim.probes(instance, ())
-            except KeyError as error:
-                raise CommandError("bad_path", str(error.args[0])) from None
-            self._check_elements(instance, ids or [])
-            watched.append((instance.strip().upper(), tuple(ids) if ids is not None else None))
-        self._watches[key] = _Watch(locations, tuple(watched))
+                known = self._known_elements(instance, ids or [])
+            except (KeyError, CommandError) as error:
+                refused.append(error.message if isinstance(error, CommandError) else str(error.args[0]))
+                accepted.append(None)
+                continue
+            if ids is not None and len(known) < len(ids):
+                refused.append(self._unknown_elements(instance, [i for i in ids if i not in known]))
+            accepted.append((instance.strip().upper(), tuple(known) if ids is not None else None))
+        self._watches[key] = _Watch(locations, tuple(a for a in accepted if a is not None))
         self._rebuild_union()
         return {
             "paths": {path: display_type(location.type).model_dump() for path, location in locations.items()},
-            "instances": [instance for instance, _ in watched],
+            "elements": accepted,
+            "refused": refused,
         }
 
-    def _check_elements(self, instance: str, ids: list[str]) -> None:
-        """Every id must be a probed element (or pin, ``box.Q``) of the instance's POU."""
+    def _known_elements(self, instance: str, ids: list[str]) -> list[str]:
+        """The ids that are probed elements (or pins, ``box.Q``) of the instance's POU."""
+        known = set(self._ctx.probes_of(self._pou_of(instance)).elements)
+        return [element for element in ids if element in known]
+
+    def _unknown_elements(self, instance: str, unknown: list[str]) -> str:
+        """Why ``unknown`` ids of the instance are not watched, with the elements it has."""
         pou = self._pou_of(instance)
-        known = set(self._ctx.probes_of(pou).elements)
-        unknown = [element for element in ids if element not in known]
-        if unknown:
-            listed = ", ".join(sorted(known)[:30]) or "none: it is not a ladder or FBD POU"
-            raise CommandError("bad_path", f"{instance} ({pou}) has no element {unknown[0]!r} (elements: {listed})")
+        listed = ", ".join(sorted(self._ctx.probes_of(pou).elements)[:30]) or "none: it is not a ladder or FBD POU"
+        return f"{instance} ({pou}) has no element {unknown[0]!r} (elements: {listed})"
 
     def _pou_of(self, instance: str) -> str:
         name = instance.strip().upper()
