@@ -41,7 +41,7 @@ from .body import (
     group_by_ladderlab,
     read_network_list,
 )
-from .configuration import read_instances
+from .configuration import MIXED_DATA, read_instances
 from .exporter import diagram_writer
 from .fbd_import import FbdImporter, fbd_groups, place_comments
 from .graph import read_graph, resolve_continuations
@@ -82,7 +82,10 @@ from .xml_safety import XmlInputError, parse_untrusted_xml
 KIND = {"program": "program", "functionBlock": "function_block", "function": "function"}
 _HEADER = re.compile(r"^(PROGRAM|FUNCTION_BLOCK|FUNCTION)\s", re.IGNORECASE)
 BACHMANN = "www.bachmann.at/plc/plcopenxml"
+POU_DATA = "http://www.3s-software.com/plcopenxml/pou"
 _UNDERSTOOD = {
+    (POU_DATA, "pou"),
+    (MIXED_DATA, "MixedAttrsVarList"),
     (BACHMANN, "textDeclaration"),
     (BACHMANN, "negated"),
     (METHOD_DATA, "Method"),
@@ -95,9 +98,12 @@ _UNDERSTOOD = {
 
 
 def _declarations(r, reader: VarReader, interface: ET.Element | None) -> str:
-    """The ST text of an interface's typed variable lists."""
+    """The ST text of an interface's typed variable lists, after its ``<documentation>`` (CODESYS writes there the
+    comment above a POU's or method's VAR blocks, without its ``//``: put back on each line)."""
     lists = [c for c in r.elements(interface) if local(c) in KIND_BY_LIST]
-    return print_declarations([reader.var_block(c) for c in lists]).rstrip()
+    comment = text_content(r.child(interface, "documentation")).strip("\n")
+    lines = [f"//{line}" for line in comment.splitlines()] if comment.strip() else []
+    return "\n".join([*lines, print_declarations([reader.var_block(c) for c in lists]).rstrip()]).strip()
 
 
 def _method_interface(r, reader: VarReader, interface: ET.Element) -> tuple[str, str | None]:
@@ -154,10 +160,12 @@ class _Importer:
 
     def project(self, root: ET.Element) -> Project:
         r = self.reader
+        configurations = r.children(r.path(root, "instances", "configurations"), "configuration")
         if local(root) == "pou":
             pou_nodes, header = [root], None
         else:
             pou_nodes, header = r.children(r.path(root, "types", "pous"), "pou"), r.child(root, "contentHeader")
+            pou_nodes += self.application_pous(configurations)
         ours = info(root, r)
         name = self.name or (header.get("name") if header is not None else None) or "imported"
         interfaces = [self.interface(node) for node in pou_nodes]
@@ -168,7 +176,6 @@ class _Importer:
         types = _with_interfaces(
             types, read_interfaces(root, r, lambda holder: _method_interface(r, VarReader(r), holder))
         )
-        configurations = r.children(r.path(root, "instances", "configurations"), "configuration")
         carried = info_text(ours, "globals")
         read_list = lambda lists, own: self.globals(lists, own if own is not None else carried)  # noqa: E731
         globals_, configuration, tasks = read_instances(r, configurations, read_list)
@@ -193,6 +200,19 @@ class _Importer:
             libraries=libraries,
             typing=self.typing(ours, root),
         )
+
+    def application_pous(self, configurations: list[ET.Element]) -> list[ET.Element]:
+        """The POUs of CODESYS's applications: a whole project's export writes those under an application (its
+        programs, often) in the resource's addData (``.../plcopenxml/pou``), the library POUs in ``types/pous``."""
+        r = self.reader
+        return [
+            pou
+            for configuration in configurations
+            for resource in r.children(configuration, "resource")
+            for data in r.children(r.child(resource, "addData"), "data")
+            if data.get("name") == POU_DATA
+            for pou in r.children(data, "pou")
+        ]
 
     def typing(self, ours: ET.Element | None, root: ET.Element) -> Typing:
         """The type rules LadderLab's data names (IEC when none); unknown rules are reported, and IEC is used."""

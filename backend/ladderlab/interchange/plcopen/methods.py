@@ -28,7 +28,7 @@ from ...st import ast
 from ...st.parser import parse_declarations, parse_source
 from ...st.printer import print_type
 from ...storage.st_text import method_header
-from .vars import parse_type_text, write_type, write_var_list
+from .vars import parse_type_text, write_documentation, write_type, write_var_list
 from .xml_io import Reader, formatted_text, info_text, local, sub, text_content
 
 METHOD_DATA = "http://www.3s-software.com/plcopenxml/method"
@@ -85,19 +85,13 @@ def read_properties(
     return found
 
 
-def read_implements(node: ET.Element, reader: Reader) -> list[str]:
-    """The INTERFACEs a function block IMPLEMENTS, from the header of CODESYS's declaration text."""
-    found = _IMPLEMENTS.search(_plain_header(node, reader))
-    return [name.strip() for name in found.group(1).split(",") if name.strip()] if found else []
-
-
 def read_fb_modifiers(node: ET.Element, reader: Reader) -> dict[str, bool]:
     """ABSTRACT and FINAL of a function block, from the header of CODESYS's declaration text."""
     header = _IMPLEMENTS.sub("", _plain_header(node, reader)).upper().split()
     return {"abstract": "ABSTRACT" in header, "final": "FINAL" in header}
 
 
-def _entries(node: ET.Element, reader: Reader, data_name: str, tag: str) -> list[ET.Element]:
+def _entries(node: ET.Element | None, reader: Reader, data_name: str, tag: str) -> list[ET.Element]:
     """The ``<tag>`` elements of the ``data_name`` entries in ``node``'s addData (CODESYS: one per entry)."""
     return [
         element
@@ -116,10 +110,15 @@ def _st_body(element: ET.Element, reader: Reader) -> str:
 
 
 def write_inheritance(interface_data: ET.Element, pou: Pou) -> None:
-    """CODESYS's EXTENDS, in the interface's ``<addData>`` (``interface_data``)."""
-    if pou.extends:
+    """CODESYS's EXTENDS and IMPLEMENTS, in the interface's ``<addData>`` (``interface_data``): one ``<Implements>``
+    per INTERFACE (a real export shows one; several elements or a comma list are read back alike)."""
+    if pou.extends or pou.implements:
         data = sub(interface_data, "data", {"name": INHERITANCE_DATA, "handleUnknown": "implementation"})
-        sub(sub(data, "Inheritance"), "Extends").text = pou.extends
+        inheritance = sub(data, "Inheritance")
+        if pou.extends:
+            sub(inheritance, "Extends").text = pou.extends
+        for name in pou.implements:
+            sub(inheritance, "Implements").text = name
 
 
 def write_methods(node: ET.Element, pou: Pou) -> ET.Element | None:
@@ -138,7 +137,9 @@ def write_methods(node: ET.Element, pou: Pou) -> ET.Element | None:
     for method in pou.methods:
         spec = parse_type_text(method.return_type) if method.return_type else None
         blocks = parse_declarations(method.declarations).ast or []
-        element = _write_method(add, method.name, spec, blocks, method.access, method_header(method))
+        element = _write_method(
+            add, method.name, spec, blocks, method.access, method_header(method), method.declarations
+        )
         formatted_text(sub(element, "body"), "ST", method.body)
     for prop in pou.properties:
         data = sub(add, "data", {"name": PROPERTY_DATA, "handleUnknown": "implementation"})
@@ -157,9 +158,16 @@ def write_methods(node: ET.Element, pou: Pou) -> ET.Element | None:
 
 
 def _write_method(
-    add: ET.Element, name: str, spec: ast.TypeSpec | None, blocks: list[ast.VarBlock], access: str, header: str
+    add: ET.Element,
+    name: str,
+    spec: ast.TypeSpec | None,
+    blocks: list[ast.VarBlock],
+    access: str,
+    header: str,
+    declarations: str = "",
 ) -> ET.Element:
-    """One CODESYS method entry in ``add``: its interface (result, variables, access) and header text."""
+    """One CODESYS method entry in ``add``: its interface (result, variables, access, the comment opening its
+    ``declarations``) and header text."""
     data = sub(add, "data", {"name": METHOD_DATA, "handleUnknown": "implementation"})
     element = sub(data, "Method", {"name": name})
     interface = sub(element, "interface")
@@ -173,6 +181,7 @@ def _write_method(
             "AccessModifiers",
         )
         modifiers.set(access.capitalize(), "true")
+    write_documentation(interface, declarations)
     plain = sub(sub(element, "addData"), "data", {"name": PLAINTEXT_DATA, "handleUnknown": "implementation"})
     formatted_text(plain, "InterfaceAsPlainText", header)
     return element
@@ -241,7 +250,7 @@ def _plain_header(element: ET.Element, reader: Reader) -> str:
 def _modifiers(method: ET.Element, interface: ET.Element | None, reader: Reader) -> dict[str, object]:
     """A CODESYS method's access (its AccessModifiers, PUBLIC when none), FINAL and ABSTRACT (its header text)."""
     access = "PUBLIC"
-    for modifiers in _entries(interface, reader, ACCESS_DATA, "AccessModifiers") if interface is not None else []:
+    for modifiers in _entries(interface, reader, ACCESS_DATA, "AccessModifiers"):
         access = next((a for a in ACCESS if modifiers.get(a.capitalize()) == "true"), access)
     header = _plain_header(method, reader).upper().split(":", 1)[0].split()
     return {"access": access, "final": "FINAL" in header, "abstract": "ABSTRACT" in header}
@@ -276,10 +285,31 @@ def read_methods(
 
 def read_extends(interface: ET.Element | None, reader: Reader) -> str | None:
     """CODESYS's EXTENDS of a function block's interface."""
-    for data in reader.children(reader.child(interface, "addData"), "data"):
-        if data.get("name") == INHERITANCE_DATA:
-            for holder in (c for c in data if isinstance(c.tag, str) and local(c) == "Inheritance"):
-                extends = next((c for c in holder if isinstance(c.tag, str) and local(c) == "Extends"), None)
-                if extends is not None and (extends.text or "").strip():
-                    return extends.text.strip()
-    return None
+    found = [name for kind, name in _inheritance(interface, reader) if kind == "Extends"]
+    return found[0] if found else None
+
+
+def read_implements(node: ET.Element, reader: Reader) -> list[str]:
+    """The INTERFACEs a function block IMPLEMENTS: ``<Implements>`` of CODESYS's inheritance entry (e!COCKPIT and
+    CODESYS V3.5 write them there), else the header of CODESYS's declaration text."""
+    listed = [
+        name.strip()
+        for kind, text in _inheritance(reader.child(node, "interface"), reader)
+        if kind == "Implements"
+        for name in text.split(",")
+        if name.strip()
+    ]
+    if listed:
+        return listed
+    found = _IMPLEMENTS.search(_plain_header(node, reader))
+    return [name.strip() for name in found.group(1).split(",") if name.strip()] if found else []
+
+
+def _inheritance(interface: ET.Element | None, reader: Reader) -> list[tuple[str, str]]:
+    """(``Extends`` or ``Implements``, the text) of each child of the interface's ``<Inheritance>`` entries."""
+    return [
+        (local(item), (item.text or "").strip())
+        for holder in _entries(interface, reader, INHERITANCE_DATA, "Inheritance")
+        for item in holder
+        if isinstance(item.tag, str) and local(item) in ("Extends", "Implements") and (item.text or "").strip()
+    ]
