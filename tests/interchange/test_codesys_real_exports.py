@@ -1,0 +1,154 @@
+"""PLCopen XML the way a real CODESYS V3.5 whole-project export is built (issue 25 item 5: import of other tools'
+files). tests/interchange/data/codesys_application.xml follows the structure of MichielVanwelsenaere/
+HomeAutomation.CoDeSys3, src/Exports/PLCopen.xml (CODESYS V3.5 SP21 Patch 3) and, for ``<Implements>``, of
+src/Exports/archive/FB_OUTPUT_DIMMER_DALI_MQTT.xml of the same repository (e!COCKPIT, built on CODESYS V3): library
+POUs in ``types/pous``, the application's POUs in its resource's addData, tasks calling programs with an empty
+typeName and an XML duration as interval, a GVL mixing CONSTANT and plain variables, EXTENDS and IMPLEMENTS in the
+inheritance entry, a method's comment in its interface's ``<documentation>``. Names and logic are LadderLab's own;
+the expected values are worked out by hand in each docstring."""
+
+from __future__ import annotations
+
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import pytest
+
+from ladderlab.interchange.plcopen.exporter import export_plcopen
+from ladderlab.interchange.plcopen.importer import import_plcopen
+from ladderlab.interchange.plcopen.xml_io import LADDERLAB_DATA
+from ladderlab.simulation.build import build_project
+
+FIXTURE = Path(__file__).parent / "data" / "codesys_application.xml"
+CODESYS = "http://www.3s-software.com/plcopenxml/"
+
+
+def dropped(name: str, places: int) -> tuple[str, str]:
+    plural = "s" if places > 1 else ""
+    return (
+        "PLCOPEN-ADDDATA",
+        f"addData '{CODESYS}{name}' ({places} place{plural}) is another tool's data that LadderLab cannot carry; "
+        "it was dropped",
+    )
+
+
+def imported(text: str | None = None):
+    result = import_plcopen((text or FIXTURE.read_text()).encode())
+    assert result.project is not None
+    return result
+
+
+def test_every_part_of_the_whole_project_export_is_read():
+    """The application's program (resource addData), the GVL's two blocks (mixedattrsvarlist, not the merged list
+    written CONSTANT), the task's program (typeName empty: the instance's name) and interval (PT0.01S is 10 ms),
+    EXTENDS and IMPLEMENTS (<Inheritance>), PRIVATE (AccessModifiers), the method's comment (<documentation>); what
+    LadderLab cannot carry is named in a warning."""
+    result = imported()
+    assert [(d.code, d.message) for d in result.diagnostics] == [
+        ("PLCOPEN-VERSION", "the document uses 'http://www.plcopen.org/xml/tc6_0200'; it is read as TC6 v2.01"),
+        dropped("objectid", 6),
+        dropped("projectinformation", 1),
+        dropped("projectstructure", 1),
+        dropped("tasksettings", 1),
+    ]
+    project = result.project
+    assert [(p.name, p.kind, p.extends, p.implements) for p in project.pous] == [
+        ("FB_COUNTER", "function_block", None, []),
+        ("FB_TANK", "function_block", "FB_COUNTER", ["I_LEVEL"]),
+        ("PLC_PRG", "program", None, []),
+    ]
+    fill, get_level = project.pous[1].methods
+    assert (fill.name, fill.access, fill.declarations) == (
+        "Fill",
+        "PRIVATE",
+        "//Adds amount while the tank is below CAPACITY.\nVAR_INPUT\n    amount : INT;\nEND_VAR",
+    )
+    assert (get_level.name, get_level.access, get_level.return_type) == ("GetLevel", "PUBLIC", "INT")
+    [resource] = project.configuration.resources
+    assert resource.globals == (
+        "VAR_GLOBAL CONSTANT\n    CAPACITY : INT := 9;\nEND_VAR\n"
+        "VAR_GLOBAL\n    tankLevel : INT; (* written by PLC_PRG every scan *)\nEND_VAR"
+    )
+    [task] = resource.tasks
+    assert (task.name, task.interval, task.priority) == ("MainTask", "T#10ms", 1)
+    assert [(p.name, p.type) for p in task.programs] == [("PLC_PRG", "PLC_PRG")]
+
+
+def test_the_imported_application_runs_scan_by_scan():
+    """Each scan PLC_PRG calls tank with inflow: Fill adds 3 while n < CAPACITY (9), through FB_COUNTER.Add. n is 3, 6,
+    9, 9; shown is I_LEVEL.GetLevel() * 10; state is Filling (1) until n reaches 9, then Full (2)."""
+    result = build_project(imported().project)
+    assert [d.format() for d in result.diagnostics if d.severity != "info"] == []
+    sim = result.simulation()
+    seen = []
+    for _ in range(4):
+        sim.cycle(1)
+        seen.append(
+            (
+                sim.read("PLC_PRG.shown"),
+                sim.read("GVL.tankLevel"),
+                sim.read("PLC_PRG.isFull"),
+                sim.read("PLC_PRG.tank.state"),
+            )
+        )
+    assert seen == [(30, 3, False, 1), (60, 6, False, 1), (90, 9, True, 2), (90, 9, True, 2)]
+
+
+@pytest.mark.parametrize(
+    ("duration", "literal"),
+    [
+        ("PT0.01S", "T#10ms"),  # the intervals of the real export: 50 ms, 10 s, 200 ms
+        ("PT0.05S", "T#50ms"),
+        ("PT10S", "T#10s"),
+        ("PT0.2S", "T#200ms"),
+        ("PT1H30M", "T#1h30m"),
+        ("P1DT0.0000015S", "T#1d1us500ns"),
+        ("PT0S", "T#0s"),
+        ("T#5ms", "T#5ms"),  # already a TIME literal (LadderLab's own export)
+    ],
+)
+def test_a_task_interval_written_as_an_xml_duration_is_a_time_literal(duration, literal):
+    """CODESYS writes the interval as an XML Schema duration (PnDTnHnMnS); TC6 v2.01 says a TIME or a variable."""
+    text = FIXTURE.read_text().replace('interval="PT0.01S"', f'interval="{duration}"')
+    [task] = imported(text).project.configuration.resources[0].tasks
+    assert task.interval == literal
+
+
+@pytest.mark.parametrize(
+    "implements",
+    ["<Implements>I_LEVEL</Implements><Implements>I_SHOW</Implements>", "<Implements>I_LEVEL, I_SHOW</Implements>"],
+)
+def test_several_interfaces_in_the_inheritance_entry(implements):
+    """Only one <Implements> was seen in a real file: one element per INTERFACE and a comma list read alike."""
+    text = FIXTURE.read_text().replace("<Implements>I_LEVEL</Implements>", implements)
+    assert imported(text).project.pous[1].implements == ["I_LEVEL", "I_SHOW"]
+
+
+def without_ladderlab_data(document: bytes) -> bytes:
+    root = ET.fromstring(document)
+    for parent in list(root.iter()):
+        for child in list(parent):
+            if child.get("name") == LADDERLAB_DATA:
+                parent.remove(child)
+    return ET.tostring(root)
+
+
+def test_ladderlabs_export_of_the_imported_project_imports_back_the_same():
+    """With LadderLab's own data and without it (IMPLEMENTS and the method's comment travel as CODESYS writes them)."""
+    project = imported().project
+    document = export_plcopen(project)
+    for data in (document, without_ladderlab_data(document)):
+        again = import_plcopen(data)
+        assert again.diagnostics == []
+        assert again.project == project
+    root = ET.fromstring(without_ladderlab_data(document))
+    ns = {"p": "http://www.plcopen.org/xml/tc6_0201", "x": "http://www.w3.org/1999/xhtml"}
+    tank = root.find("p:types/p:pous/p:pou[@name='FB_TANK']", ns)
+    assert [e.text for e in tank.iterfind("p:interface/p:addData/p:data/p:Inheritance/*", ns)] == [
+        "FB_COUNTER",
+        "I_LEVEL",
+    ]
+    fill = tank.find("p:addData/p:data/p:Method[@name='Fill']", ns)
+    assert fill.findtext("p:interface/p:documentation/x:p", namespaces=ns) == (
+        "Adds amount while the tank is below CAPACITY."
+    )
