@@ -4,8 +4,10 @@ HomeAutomation.CoDeSys3, src/Exports/PLCopen.xml (CODESYS V3.5 SP21 Patch 3) and
 src/Exports/archive/FB_OUTPUT_DIMMER_DALI_MQTT.xml of the same repository (e!COCKPIT, built on CODESYS V3): library
 POUs in ``types/pous``, the application's POUs in its resource's addData, tasks calling programs with an empty
 typeName and an XML duration as interval, a GVL mixing CONSTANT and plain variables, EXTENDS and IMPLEMENTS in the
-inheritance entry, a method's comment in its interface's ``<documentation>``. Names and logic are LadderLab's own;
-the expected values are worked out by hand in each docstring."""
+inheritance entry, a method's comment in its interface's ``<documentation>``; and of jarbesk109-jpg/plcdoc,
+samples/05_drive_oop.xml (CODESYS V3.5 SP22 Patch 3): the application's data types in its resource's addData, its
+libraries and device, a PROPERTY whose SetAccessor comes first and whose ``<AccessModifiers />`` says PUBLIC. Names
+and logic are LadderLab's own; the expected values are worked out by hand in each docstring."""
 
 from __future__ import annotations
 
@@ -39,13 +41,19 @@ def imported(text: str | None = None):
 
 
 def test_every_part_of_the_whole_project_export_is_read():
-    """The application's program (resource addData), the GVL's two blocks (mixedattrsvarlist, not the merged list
-    written CONSTANT), the task's program (typeName empty: the instance's name) and interval (PT0.01S is 10 ms),
-    EXTENDS and IMPLEMENTS (<Inheritance>), PRIVATE (AccessModifiers), the method's comment (<documentation>); what
-    LadderLab cannot carry is named in a warning."""
+    """The application's program and data type (resource addData), the GVL's two blocks (mixedattrsvarlist, not the
+    merged list written CONSTANT), the task's program (typeName empty: the instance's name) and interval (PT0.01S is
+    10 ms), EXTENDS and IMPLEMENTS (<Inheritance>), PRIVATE and PROTECTED (AccessModifiers), the method's comment
+    (<documentation>), the properties' accessors in either order; what LadderLab cannot carry is named in a
+    warning."""
     result = imported()
     assert [(d.code, d.message) for d in result.diagnostics] == [
         ("PLCOPEN-VERSION", "the document uses 'http://www.plcopen.org/xml/tc6_0200'; it is read as TC6 v2.01"),
+        (
+            "PLCOPEN-ADDDATA",
+            "addData 'Device' (1 place) is another tool's data that LadderLab cannot carry; it was dropped",
+        ),
+        dropped("libraries", 1),
         dropped("objectid", 6),
         dropped("projectinformation", 1),
         dropped("projectstructure", 1),
@@ -64,6 +72,15 @@ def test_every_part_of_the_whole_project_export_is_read():
         "//Adds amount while the tank is below CAPACITY.\nVAR_INPUT\n    amount : INT;\nEND_VAR",
     )
     assert (get_level.name, get_level.access, get_level.return_type) == ("GetLevel", "PUBLIC", "INT")
+    amount, room = project.pous[1].properties
+    assert (amount.name, amount.type, amount.access) == ("Amount", "INT", "PUBLIC")
+    assert (amount.get.declarations, amount.get.body, amount.set.body) == (
+        "VAR\n    half : INT;\nEND_VAR",
+        "half := n / 2;\nAmount := half + half + n MOD 2;",
+        "n := Amount;",
+    )
+    assert (room.name, room.access, room.get.body, room.set) == ("Room", "PROTECTED", "Room := CAPACITY - n;", None)
+    assert project.types.startswith("TYPE\n    E_STATE : (Idle := 0, Filling := 1, Full := 2);\nEND_TYPE")
     [resource] = project.configuration.resources
     assert resource.globals == (
         "VAR_GLOBAL CONSTANT\n    CAPACITY : INT := 9;\nEND_VAR\n"
@@ -76,7 +93,8 @@ def test_every_part_of_the_whole_project_export_is_read():
 
 def test_the_imported_application_runs_scan_by_scan():
     """Each scan PLC_PRG calls tank with inflow: Fill adds 3 while n < CAPACITY (9), through FB_COUNTER.Add. n is 3, 6,
-    9, 9; shown is I_LEVEL.GetLevel() * 10; state is Filling (1) until n reaches 9, then Full (2)."""
+    9, 9; shown is I_LEVEL.GetLevel() * 10 plus the GET of Amount (n / 2 twice plus n MOD 2: n again), 33, 66, 99,
+    99; state is Filling (1) until n reaches 9, then Full (2)."""
     result = build_project(imported().project)
     assert [d.format() for d in result.diagnostics if d.severity != "info"] == []
     sim = result.simulation()
@@ -91,7 +109,23 @@ def test_the_imported_application_runs_scan_by_scan():
                 sim.read("PLC_PRG.tank.state"),
             )
         )
-    assert seen == [(30, 3, False, 1), (60, 6, False, 1), (90, 9, True, 2), (90, 9, True, 2)]
+    assert seen == [(33, 3, False, 1), (66, 6, False, 1), (99, 9, True, 2), (99, 9, True, 2)]
+
+
+def test_the_imported_access_of_a_property_is_enforced():
+    """Room came PROTECTED from its AccessModifiers: a program may not read it (it was PUBLIC before)."""
+    project = imported().project
+    main = project.pous[2]
+    changed = project.model_copy(
+        update={"pous": [*project.pous[:2], main.model_copy(update={"body": main.body + "\nshown := tank.Room;"})]}
+    )
+    assert [(d.code, d.file, d.message) for d in build_project(changed).diagnostics] == [
+        (
+            "ST-NOT-ACCESSIBLE",
+            "PLC_PRG/body",
+            "the property FB_TANK.Room is PROTECTED: only its function block and those derived from it may use it",
+        )
+    ]
 
 
 @pytest.mark.parametrize(

@@ -83,8 +83,10 @@ KIND = {"program": "program", "functionBlock": "function_block", "function": "fu
 _HEADER = re.compile(r"^(PROGRAM|FUNCTION_BLOCK|FUNCTION)\s", re.IGNORECASE)
 BACHMANN = "www.bachmann.at/plc/plcopenxml"
 POU_DATA = "http://www.3s-software.com/plcopenxml/pou"
+DATATYPE_DATA = "http://www.3s-software.com/plcopenxml/datatype"
 _UNDERSTOOD = {
     (POU_DATA, "pou"),
+    (DATATYPE_DATA, "dataType"),
     (MIXED_DATA, "MixedAttrsVarList"),
     (BACHMANN, "textDeclaration"),
     (BACHMANN, "negated"),
@@ -165,14 +167,17 @@ class _Importer:
             pou_nodes, header = [root], None
         else:
             pou_nodes, header = r.children(r.path(root, "types", "pous"), "pou"), r.child(root, "contentHeader")
-            pou_nodes += self.application_pous(configurations)
+            pou_nodes += self.application_entries(configurations, POU_DATA, "pou")
         ours = info(root, r)
         name = self.name or (header.get("name") if header is not None else None) or "imported"
         interfaces = [self.interface(node) for node in pou_nodes]
         signatures = Signatures([p for p in interfaces if p is not None])
         pous = [self.pou(node, p, signatures) for node, p in zip(pou_nodes, interfaces) if p is not None]
         self.collect_foreign(root)
-        types = self.types(r.path(root, "types", "dataTypes"), info_text(ours, "types"))
+        data_types = r.children(r.path(root, "types", "dataTypes"), "dataType") + self.application_entries(
+            configurations, DATATYPE_DATA, "dataType"
+        )
+        types = self.types(data_types, info_text(ours, "types"))
         types = _with_interfaces(
             types, read_interfaces(root, r, lambda holder: _method_interface(r, VarReader(r), holder))
         )
@@ -201,17 +206,18 @@ class _Importer:
             typing=self.typing(ours, root),
         )
 
-    def application_pous(self, configurations: list[ET.Element]) -> list[ET.Element]:
-        """The POUs of CODESYS's applications: a whole project's export writes those under an application (its
-        programs, often) in the resource's addData (``.../plcopenxml/pou``), the library POUs in ``types/pous``."""
+    def application_entries(self, configurations: list[ET.Element], data_name: str, tag: str) -> list[ET.Element]:
+        """The POUs or data types of CODESYS's applications: a whole project's export writes what is under an
+        application in the resource's addData (``.../plcopenxml/pou``, ``.../plcopenxml/datatype``), what is
+        outside one in ``types``."""
         r = self.reader
         return [
-            pou
+            element
             for configuration in configurations
             for resource in r.children(configuration, "resource")
             for data in r.children(r.child(resource, "addData"), "data")
-            if data.get("name") == POU_DATA
-            for pou in r.children(data, "pou")
+            if data.get("name") == data_name
+            for element in r.children(data, tag)
         ]
 
     def typing(self, ours: ET.Element | None, root: ET.Element) -> Typing:
@@ -448,8 +454,7 @@ class _Importer:
         expected = regenerate(carried)
         return expected is not None and [canonical(e) for e in expected] == [canonical(e) for e in actual]
 
-    def types(self, data_types: ET.Element | None, carried: str | None) -> str:
-        elements = self.reader.children(data_types, "dataType")
+    def types(self, elements: list[ET.Element], carried: str | None) -> str:
         if carried is not None and self.same(elements, carried, _type_elements):
             return carried
         reader = VarReader(self.reader)

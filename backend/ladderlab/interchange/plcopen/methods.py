@@ -23,7 +23,7 @@ import re
 import xml.etree.ElementTree as ET
 from collections.abc import Callable
 
-from ...model.project import Accessor, Method, Pou, Property
+from ...model.project import Accessor, Method, MethodAccess, Pou, Property
 from ...st import ast
 from ...st.parser import parse_declarations, parse_source
 from ...st.printer import print_type
@@ -37,7 +37,7 @@ PROPERTY_DATA = "http://www.3s-software.com/plcopenxml/property"
 PLAINTEXT_DATA = "http://www.3s-software.com/plcopenxml/interfaceasplaintext"
 ACCESS_DATA = "http://www.3s-software.com/plcopenxml/accessmodifiers"
 INTERFACE_DATA = "http://www.3s-software.com/plcopenxml/interface"
-ACCESS = ("PUBLIC", "PRIVATE", "PROTECTED", "INTERNAL")
+ACCESS: tuple[MethodAccess, ...] = ("PUBLIC", "PRIVATE", "PROTECTED", "INTERNAL")
 _INTERFACE_EXTENDS = re.compile(r"^\s*INTERFACE\s+\w+\s+EXTENDS\s+([A-Za-z_][\w\s,]*)", re.IGNORECASE)
 _IMPLEMENTS = re.compile(r"\bIMPLEMENTS\s+([A-Za-z_][\w\s,]*)", re.IGNORECASE)
 
@@ -81,7 +81,8 @@ def read_properties(
                 holder = reader.child(accessor, "interface")
                 text = declarations(holder)[0] if holder is not None else ""
                 accessors[kind] = Accessor(declarations=text, body=_st_body(accessor, reader))
-        found.append(Property(name=element.get("name", ""), type=type_text or "", **accessors))
+        access = _access(interface, reader)
+        found.append(Property(name=element.get("name", ""), type=type_text or "", access=access, **accessors))
     return found
 
 
@@ -145,8 +146,10 @@ def write_methods(node: ET.Element, pou: Pou) -> ET.Element | None:
         data = sub(add, "data", {"name": PROPERTY_DATA, "handleUnknown": "implementation"})
         element = sub(data, "Property", {"name": prop.name})
         spec = parse_type_text(prop.type)
+        interface = sub(element, "interface")
         if spec is not None:
-            write_type(sub(sub(element, "interface"), "returnType"), spec)
+            write_type(sub(interface, "returnType"), spec)
+        _write_access(interface, prop.access)
         for tag, accessor in (("GetAccessor", prop.get), ("SetAccessor", prop.set)):
             if accessor is not None:
                 holder = sub(element, tag)
@@ -175,12 +178,7 @@ def _write_method(
         write_type(sub(interface, "returnType"), spec)
     for block in blocks:
         write_var_list(interface, block)
-    if access != "PUBLIC":
-        modifiers = sub(
-            sub(sub(interface, "addData"), "data", {"name": ACCESS_DATA, "handleUnknown": "implementation"}),
-            "AccessModifiers",
-        )
-        modifiers.set(access.capitalize(), "true")
+    _write_access(interface, access)
     write_documentation(interface, declarations)
     plain = sub(sub(element, "addData"), "data", {"name": PLAINTEXT_DATA, "handleUnknown": "implementation"})
     formatted_text(plain, "InterfaceAsPlainText", header)
@@ -247,13 +245,26 @@ def _plain_header(element: ET.Element, reader: Reader) -> str:
     return text_content(holders[0]).strip().split("\n", 1)[0] if holders else ""
 
 
-def _modifiers(method: ET.Element, interface: ET.Element | None, reader: Reader) -> dict[str, object]:
-    """A CODESYS method's access (its AccessModifiers, PUBLIC when none), FINAL and ABSTRACT (its header text)."""
-    access = "PUBLIC"
+def _access(interface: ET.Element | None, reader: Reader) -> MethodAccess:
+    """A CODESYS method's or property's access: its AccessModifiers (``<AccessModifiers Private="true"/>``), PUBLIC
+    when none is set (CODESYS writes ``<AccessModifiers />`` for a PUBLIC property)."""
+    access: MethodAccess = "PUBLIC"
     for modifiers in _entries(interface, reader, ACCESS_DATA, "AccessModifiers"):
         access = next((a for a in ACCESS if modifiers.get(a.capitalize()) == "true"), access)
+    return access
+
+
+def _write_access(interface: ET.Element, access: str) -> None:
+    """``_access`` written back: nothing for PUBLIC."""
+    if access != "PUBLIC":
+        data = sub(sub(interface, "addData"), "data", {"name": ACCESS_DATA, "handleUnknown": "implementation"})
+        sub(data, "AccessModifiers").set(access.capitalize(), "true")
+
+
+def _modifiers(method: ET.Element, interface: ET.Element | None, reader: Reader) -> dict[str, object]:
+    """A CODESYS method's access (``_access``), FINAL and ABSTRACT (its header text)."""
     header = _plain_header(method, reader).upper().split(":", 1)[0].split()
-    return {"access": access, "final": "FINAL" in header, "abstract": "ABSTRACT" in header}
+    return {"access": _access(interface, reader), "final": "FINAL" in header, "abstract": "ABSTRACT" in header}
 
 
 def read_methods(
