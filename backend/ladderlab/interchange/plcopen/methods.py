@@ -280,6 +280,7 @@ def read_methods(
         if data.get("name") != METHOD_DATA:
             continue
         for element in (c for c in data if isinstance(c.tag, str) and local(c) == "Method"):
+            _report_implicit(element, node.get("name", ""), reader)
             interface = reader.child(element, "interface")
             text, return_type = declarations(interface) if interface is not None else ("", None)
             methods.append(
@@ -292,6 +293,29 @@ def read_methods(
                 )
             )
     return methods
+
+
+_IMPLICIT = {
+    "FB_INIT": "when an instance is initialised",
+    "FB_REINIT": "after an instance was copied (online change)",
+    "FB_EXIT": "before an instance is removed",
+}
+
+
+def _report_implicit(method: ET.Element, pou: str, reader: Reader) -> None:
+    """A warning for a method CODESYS calls by itself (FB_init, FB_reinit, FB_exit): LadderLab imports it as one
+    that runs only when called, so an instance could hold other values than in CODESYS."""
+    name = method.get("name", "")
+    when = _IMPLICIT.get(name.upper())
+    if when is not None:
+        reader.report(
+            "PLCOPEN-UNSUPPORTED",
+            f"method {pou}.{name} was imported as an ordinary method: CODESYS calls it by itself {when}, LadderLab "
+            "never does, so its statements run only where the program calls it",
+            method,
+            severity="warning",
+            pou=pou,
+        )
 
 
 def read_extends(interface: ET.Element | None, reader: Reader) -> str | None:
