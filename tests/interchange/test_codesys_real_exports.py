@@ -193,3 +193,88 @@ def test_ladderlabs_export_of_the_imported_project_imports_back_the_same():
     assert fill.findtext("p:interface/p:documentation/x:p", namespaces=ns) == (
         "Adds amount while the tank is below CAPACITY."
     )
+
+
+INTERFACES = Path(__file__).parent / "data" / "codesys_interfaces.xml"
+
+
+def test_interface_members_listed_as_codesys_v35_sp21_and_twincat_write_them_are_read():
+    """codesys_interfaces.xml follows he-man86/volt, packages/volt-cli/test/Volt.Engine.Tests/fixtures/codesys-itf/
+    IModuleManager.plcopen.xml and ITF_FolderedMember.plcopen.xml (CODESYS V3.5 SP21 Patch 4: <Methods> and
+    <Properties> in the Interface, a property typed only in its header text) and fixtures/tc-pou/
+    FB_TcMembers.plcopen.xml (TwinCAT 3.5.13: members' declaration text as a direct child, PRIVATE only there)."""
+    result = import_plcopen(INTERFACES.read_bytes())
+    assert [d.code for d in result.diagnostics] == ["PLCOPEN-VERSION", "PLCOPEN-ADDDATA"]  # tc6_0200; objectid
+    project = result.project
+    assert project.types == (
+        "INTERFACE I_SWITCH\nMETHOD Toggle : BOOL\n// Switches over; the new state\nEND_METHOD\n"
+        "PROPERTY IsOn : BOOL\nGET END_GET\nSET END_SET\nEND_PROPERTY\n"
+        "PROPERTY Toggles : INT\nGET END_GET\nEND_PROPERTY\nEND_INTERFACE"
+    )
+    lamp = project.pous[0]
+    assert lamp.implements == ["I_SWITCH"]
+    assert [(m.name, m.access) for m in lamp.methods] == [("Toggle", "PUBLIC"), ("Bump", "PRIVATE")]
+    assert [(p.name, p.type, p.access, p.get is not None, p.set is not None) for p in lamp.properties] == [
+        ("IsOn", "BOOL", "PUBLIC", True, True),
+        ("Toggles", "INT", "PUBLIC", True, False),
+    ]
+
+
+def test_the_interface_project_runs_scan_by_scan_through_interface_properties():
+    """Each scan: wasOn reads IsOn through I_SWITCH before Toggle flips it, state is Toggle's result, toggled reads
+    Toggles (Bump counts the calls): (FALSE, TRUE, 1), (TRUE, FALSE, 2), (FALSE, TRUE, 3)."""
+    result = build_project(import_plcopen(INTERFACES.read_bytes()).project)
+    assert [d.format() for d in result.diagnostics if d.severity != "info"] == []
+    sim = result.simulation()
+    seen = []
+    for _ in range(3):
+        sim.cycle(1)
+        seen.append((sim.read("PLC_PRG.wasOn"), sim.read("PLC_PRG.state"), sim.read("PLC_PRG.toggled")))
+    assert seen == [(False, True, 1), (True, False, 2), (False, True, 3)]
+
+
+def test_private_from_twincats_header_text_is_enforced():
+    """TwinCAT writes no AccessModifiers: METHOD PRIVATE Bump in the declaration text makes it PRIVATE."""
+    project = import_plcopen(INTERFACES.read_bytes()).project
+    main = project.pous[1]
+    changed = project.model_copy(
+        update={"pous": [project.pous[0], main.model_copy(update={"body": main.body + "\ntoggled := lamp.Bump();"})]}
+    )
+    assert [(d.code, d.file, d.message) for d in build_project(changed).diagnostics] == [
+        (
+            "ST-NOT-ACCESSIBLE",
+            "PLC_PRG/body",
+            "the method FB_LAMP.Bump is PRIVATE: only its own function block may call it",
+        )
+    ]
+
+
+def test_the_interface_project_exported_by_ladderlab_imports_back_the_same():
+    """LadderLab writes the INTERFACE in the <Methods> / <Properties> form above; with and without its own data the
+    project comes back the same."""
+    project = import_plcopen(INTERFACES.read_bytes()).project
+    document = export_plcopen(project)
+    for data in (document, without_ladderlab_data(document)):
+        again = import_plcopen(data)
+        assert again.diagnostics == []
+        assert again.project == project
+    ns = {"p": "http://www.plcopen.org/xml/tc6_0201"}
+    interface = ET.fromstring(document).find("p:addData/p:data/p:Interface", ns)
+    assert [e.get("name") for e in interface.iterfind("p:Methods/p:Method", ns)] == ["Toggle"]
+    assert [
+        (e.get("name"), [a.tag.split("}")[1] for a in e if a.tag.endswith("Accessor")])
+        for e in interface.iterfind("p:Properties/p:Property", ns)
+    ] == [("IsOn", ["GetAccessor", "SetAccessor"]), ("Toggles", ["GetAccessor"])]
+
+
+def test_an_interface_property_without_a_type_is_a_located_warning():
+    """Neither a returnType nor a header text with a type: the property is left out, the warning at its element."""
+    text = INTERFACES.read_text().replace("PROPERTY PUBLIC Toggles : INT", "PROPERTY PUBLIC Toggles")
+    result = import_plcopen(text.encode())
+    [warning] = [d for d in result.diagnostics if d.code == "PLCOPEN-UNSUPPORTED"]
+    assert (warning.severity, warning.message) == (
+        "warning",
+        "the PROPERTY Toggles of INTERFACE I_SWITCH has no type; it was left out",
+    )
+    assert warning.line == text[: text.index('<Property name="Toggles">\n            <GetAccessor>')].count("\n") + 1
+    assert "Toggles" not in result.project.types

@@ -26,7 +26,7 @@ from collections.abc import Callable
 from ...model.project import Accessor, Method, MethodAccess, Pou, Property
 from ...st import ast
 from ...st.parser import parse_declarations, parse_source
-from ...st.printer import print_type
+from ...st.printer import print_declarations, print_type
 from ...storage.st_text import method_header
 from .vars import parse_type_text, write_documentation, write_type, write_var_list
 from .xml_io import Reader, formatted_text, info_text, local, sub, text_content
@@ -81,7 +81,7 @@ def read_properties(
                 holder = reader.child(accessor, "interface")
                 text = declarations(holder)[0] if holder is not None else ""
                 accessors[kind] = Accessor(declarations=text, body=_st_body(accessor, reader))
-        access = _access(interface, reader)
+        access = _access(element, interface, reader)
         found.append(Property(name=element.get("name", ""), type=type_text or "", access=access, **accessors))
     return found
 
@@ -186,54 +186,93 @@ def _write_method(
 
 
 def write_interfaces(add: ET.Element, types: str) -> None:
-    """The project's INTERFACEs (from its types text) as CODESYS's entries in the project's ``add``(Data): their
-    methods. Their PROPERTYs travel in LadderLab's types text only: how CODESYS writes them is not known here."""
+    """The project's INTERFACEs (from its types text) as CODESYS V3.5 SP21 writes them in the project's ``add``(Data):
+    ``<Interface name>`` with ``<Methods>`` and ``<Properties>`` (prototypes: typed interface and declaration text)
+    and its header text."""
     parsed = parse_source(types, file="types.st")
     for item in parsed.ast.items if parsed.ast is not None else []:
         if not isinstance(item, ast.InterfaceDecl):
             continue
         data = sub(add, "data", {"name": INTERFACE_DATA, "handleUnknown": "implementation"})
         element = sub(data, "Interface", {"name": item.name})
-        methods = sub(element, "addData")
+        methods = sub(element, "Methods") if item.methods else None
         for method in item.methods:
-            access = next((m for m in method.modifiers if m in ACCESS), "PUBLIC")
+            prototype = sub(methods, "Method", {"name": method.name})
+            interface = sub(prototype, "interface")
+            if method.return_type is not None:
+                write_type(sub(interface, "returnType"), method.return_type)
+            for block in method.var_blocks:
+                write_var_list(interface, block)
+            typed = types.splitlines()[method.span.line : method.span.end_line]  # after the METHOD line
+            write_documentation(interface, "\n".join(typed))
             returns = f" : {print_type(method.return_type)}" if method.return_type is not None else ""
-            _write_method(
-                methods, method.name, method.return_type, method.var_blocks, access, f"METHOD {method.name}{returns}"
-            )
+            text = f"METHOD {method.name}{returns}\n{print_declarations(method.var_blocks)}".rstrip()
+            formatted_text(prototype, "InterfaceAsPlainText", text)
+        properties = sub(element, "Properties") if item.properties else None
+        for prop in item.properties:
+            prototype = sub(properties, "Property", {"name": prop.name})
+            write_type(sub(sub(prototype, "interface"), "returnType"), prop.type)
+            for accessor in prop.accessors:
+                formatted_text(sub(prototype, f"{accessor.kind.capitalize()}Accessor"), "InterfaceAsPlainText", "")
+            formatted_text(prototype, "InterfaceAsPlainText", f"PROPERTY {prop.name} : {print_type(prop.type)}")
         extends = f" EXTENDS {', '.join(item.extends)}" if item.extends else ""
-        plain = sub(methods, "data", {"name": PLAINTEXT_DATA, "handleUnknown": "implementation"})
-        formatted_text(plain, "InterfaceAsPlainText", f"INTERFACE {item.name}{extends}")
+        formatted_text(element, "InterfaceAsPlainText", f"INTERFACE {item.name}{extends}")
 
 
 def read_interfaces(
     root: ET.Element, reader: Reader, declarations: Callable[[ET.Element], tuple[str, str | None]]
 ) -> list[tuple[str, str]]:
     """The INTERFACEs of CODESYS's (or TwinCAT's) project addData as (name, ST text): method prototypes with their
-    variables and result (read by ``declarations``), EXTENDS from the header text."""
+    variables and result (read by ``declarations``), property prototypes with their accessors, EXTENDS from the
+    header text. Methods and properties are listed in ``<Methods>`` / ``<Properties>`` (CODESYS V3.5 SP21,
+    TwinCAT) or given as entries of the Interface's addData."""
     found = []
     for element in _entries(root, reader, INTERFACE_DATA, "Interface"):
         name = element.get("name", "")
         header = _plain_header(element, reader)
         extends = _INTERFACE_EXTENDS.match(header)
         lines = [f"INTERFACE {name}" + (f" EXTENDS {extends.group(1).strip()}" if extends else "")]
-        listed = [c for holder in reader.children(element, "Methods") for c in reader.children(holder, "Method")]
-        for method in listed + _entries(element, reader, METHOD_DATA, "Method"):
+        for method in _listed(element, reader, "Methods", "Method") + _entries(element, reader, METHOD_DATA, "Method"):
             interface = reader.child(method, "interface")
             text, return_type = declarations(interface) if interface is not None else ("", None)
             lines.append(f"METHOD {method.get('name', '')}" + (f" : {return_type}" if return_type else ""))
             lines += [text] if text else []
             lines.append("END_METHOD")
-        for prop in _entries(element, reader, PROPERTY_DATA, "Property"):
-            reader.report(
-                "PLCOPEN-UNSUPPORTED",
-                f"the PROPERTY {prop.get('name', '')} of INTERFACE {name} was left out: LadderLab does not read "
-                "CODESYS's interface properties yet (declare it in the INTERFACE's ST text)",
-                prop,
-                severity="warning",
-            )
+        listed = _listed(element, reader, "Properties", "Property") + _entries(
+            element, reader, PROPERTY_DATA, "Property"
+        )
+        for prop in listed:
+            lines += _property_prototype(prop, name, reader, declarations)
         found.append((name, "\n".join([*lines, "END_INTERFACE"])))
     return found
+
+
+def _listed(element: ET.Element, reader: Reader, holder: str, tag: str) -> list[ET.Element]:
+    """The ``<tag>`` children of ``element``'s ``<holder>`` lists (``<Methods><Method>``)."""
+    return [item for parent in reader.children(element, holder) for item in reader.children(parent, tag)]
+
+
+def _property_prototype(
+    prop: ET.Element, interface_name: str, reader: Reader, declarations: Callable[[ET.Element], tuple[str, str | None]]
+) -> list[str]:
+    """An INTERFACE's PROPERTY as ST lines (``PROPERTY P : T GET END_GET END_PROPERTY``): its type from the typed
+    returnType, else its header text (``PROPERTY PUBLIC P : T``); a property with neither is a located warning."""
+    name = prop.get("name", "")
+    holder = reader.child(prop, "interface")
+    type_text = declarations(holder)[1] if holder is not None else None
+    header = _plain_header(prop, reader)
+    if not type_text and ":" in header:
+        type_text = header.split(":", 1)[1].strip().rstrip(";").strip()
+    if not type_text:
+        reader.report(
+            "PLCOPEN-UNSUPPORTED",
+            f"the PROPERTY {name} of INTERFACE {interface_name} has no type; it was left out",
+            prop,
+            severity="warning",
+        )
+        return []
+    kinds = [kind for kind in ("GET", "SET") if reader.children(prop, f"{kind.capitalize()}Accessor")]
+    return [f"PROPERTY {name} : {type_text}", *(f"{kind} END_{kind}" for kind in kinds), "END_PROPERTY"]
 
 
 def _plain_header(element: ET.Element, reader: Reader) -> str:
@@ -245,13 +284,14 @@ def _plain_header(element: ET.Element, reader: Reader) -> str:
     return text_content(holders[0]).strip().split("\n", 1)[0] if holders else ""
 
 
-def _access(interface: ET.Element | None, reader: Reader) -> MethodAccess:
-    """A CODESYS method's or property's access: its AccessModifiers (``<AccessModifiers Private="true"/>``), PUBLIC
-    when none is set (CODESYS writes ``<AccessModifiers />`` for a PUBLIC property)."""
-    access: MethodAccess = "PUBLIC"
+def _access(element: ET.Element, interface: ET.Element | None, reader: Reader) -> MethodAccess:
+    """A CODESYS method's or property's access: its AccessModifiers (``<AccessModifiers Private="true"/>``), else the
+    specifier of its header text (``METHOD PRIVATE M``: TwinCAT has no AccessModifiers), else PUBLIC (CODESYS writes
+    ``<AccessModifiers />`` for a PUBLIC property)."""
     for modifiers in _entries(interface, reader, ACCESS_DATA, "AccessModifiers"):
-        access = next((a for a in ACCESS if modifiers.get(a.capitalize()) == "true"), access)
-    return access
+        return next((a for a in ACCESS if modifiers.get(a.capitalize()) == "true"), "PUBLIC")
+    words = _plain_header(element, reader).upper().split(":", 1)[0].split()[1:-1]  # between METHOD and the name
+    return next((a for a in ACCESS if a in words), "PUBLIC")
 
 
 def _write_access(interface: ET.Element, access: str) -> None:
@@ -264,7 +304,7 @@ def _write_access(interface: ET.Element, access: str) -> None:
 def _modifiers(method: ET.Element, interface: ET.Element | None, reader: Reader) -> dict[str, object]:
     """A CODESYS method's access (``_access``), FINAL and ABSTRACT (its header text)."""
     header = _plain_header(method, reader).upper().split(":", 1)[0].split()
-    return {"access": _access(interface, reader), "final": "FINAL" in header, "abstract": "ABSTRACT" in header}
+    return {"access": _access(method, interface, reader), "final": "FINAL" in header, "abstract": "ABSTRACT" in header}
 
 
 def read_methods(
