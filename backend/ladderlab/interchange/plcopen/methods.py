@@ -1,19 +1,20 @@
-"""Object orientation in PLCopen XML, the way CODESYS writes it (TC6 XML has no place for it).
+"""Object orientation in PLCopen XML, the way CODESYS writes it (TC6 XML has no place for it; docs/plcopen.md).
 
 A function block's METHODs: ``<pou><addData><data name=".../plcopenxml/method" handleUnknown="implementation">
 <Method name="M"><interface>returnType, var lists</interface><body><ST>text</ST></body></Method></data>`` - one
 ``data`` per method; PROPERTYs: ``<data name=".../plcopenxml/property"><Property name="P"><interface><returnType>
 </interface><GetAccessor><interface/><body/></GetAccessor><SetAccessor>...</SetAccessor></Property></data>`` (either
-accessor first); EXTENDS: ``<interface><addData><data name=".../plcopenxml/pouinheritance"><Inheritance>
-<Extends>Base</Extends></Inheritance>``; IMPLEMENTS: the header of the declaration CODESYS writes as text
-(``.../plcopenxml/interfaceasplaintext``: ``FUNCTION_BLOCK F EXTENDS B IMPLEMENTS I1, I2``). A method's access
-(``<interface><addData><data name=".../plcopenxml/accessmodifiers"><AccessModifiers Private="true"/>``, PUBLIC when
-absent) and its header as text (``METHOD PUBLIC FINAL M : INT`` in the method's ``.../interfaceasplaintext``: FINAL and
+accessor first); EXTENDS and IMPLEMENTS: ``<interface><addData><data name=".../plcopenxml/pouinheritance">
+<Inheritance><Extends>Base</Extends><Implements>I</Implements>``, IMPLEMENTS also in the header of the declaration
+text CODESYS writes (``.../plcopenxml/interfaceasplaintext``: ``FUNCTION_BLOCK F EXTENDS B IMPLEMENTS I1, I2``). A
+method's or property's access (``<interface><addData><data name=".../plcopenxml/accessmodifiers"><AccessModifiers
+Private="true"/>``, else the specifier of its header text as TwinCAT writes it, PUBLIC when neither says one) and its
+header as text (``METHOD PUBLIC FINAL M : INT`` in its ``interfaceasplaintext`` entry or direct child: FINAL and
 ABSTRACT, which CODESYS's typed XML does not say). INTERFACEs: the project's ``<addData><data
-name=".../plcopenxml/interface"><Interface name="I">`` with its method prototypes as a POU's (in its addData; TwinCAT
-lists them in ``<Methods>``) and EXTENDS in its header text. The texts as typed travel in LadderLab's ``<ll:info>``
-(``methods``, ``properties``: the model's JSON; INTERFACEs in the project's types text, carried verbatim;
-docs/plcopen.md).
+name=".../plcopenxml/interface"><Interface name="I">`` with ``<Methods>`` and ``<Properties>`` of prototypes
+(CODESYS V3.5 SP21, TwinCAT; entries in its addData as a POU's are read too) and EXTENDS in its header text. The
+texts as typed travel in LadderLab's ``<ll:info>`` (``methods``, ``properties``: the model's JSON; INTERFACEs in the
+project's types text, carried verbatim).
 """
 
 from __future__ import annotations
