@@ -278,3 +278,54 @@ def test_an_interface_property_without_a_type_is_a_located_warning():
     )
     assert warning.line == text[: text.index('<Property name="Toggles">\n            <GetAccessor>')].count("\n") + 1
     assert "Toggles" not in result.project.types
+
+
+FBD_METHOD = """<data name="http://www.3s-software.com/plcopenxml/method" handleUnknown="implementation">
+            <Method name="Drawn">
+              <interface>
+                <returnType>
+                  <BOOL />
+                </returnType>
+              </interface>
+              <body>
+                <FBD>
+                  <vendorElement localId="10000000000">
+                    <position x="0" y="0" />
+                    <alternativeText>
+                      <xhtml xmlns="http://www.w3.org/1999/xhtml">FBD Implementation Attributes</xhtml>
+                    </alternativeText>
+                  </vendorElement>
+                </FBD>
+              </body>
+              <InterfaceAsPlainText>
+                <xhtml xmlns="http://www.w3.org/1999/xhtml">METHOD Drawn : BOOL</xhtml>
+              </InterfaceAsPlainText>
+              <addData />
+            </Method>
+          </data>
+          """
+
+
+def test_a_method_drawn_in_fbd_is_left_out_with_a_located_warning():
+    """CODESYS V3.5 SP21 writes a method drawn in FBD with an <FBD> body (he-man86/volt, packages/volt-cli/test/
+    Volt.Engine.Tests/fixtures/codesys-pou/POU_SfcRoot_StFbdMethods.plcopen.xml). LadderLab's methods are ST: the
+    method is left out (it was imported with an empty body, whose calls returned FALSE), so calling it is a located
+    build error."""
+    marker = '<data name="http://www.3s-software.com/plcopenxml/property"'
+    text = INTERFACES.read_text().replace(marker, FBD_METHOD + marker, 1)
+    result = import_plcopen(text.encode())
+    [warning] = [d for d in result.diagnostics if d.code == "PLCOPEN-UNSUPPORTED"]
+    assert (warning.severity, warning.message) == (
+        "warning",
+        "the method FB_LAMP.Drawn is written in FBD; LadderLab's methods and properties are ST, so it was left out",
+    )
+    assert warning.line == text[: text.index('<Method name="Drawn">')].count("\n") + 1
+    project = result.project
+    assert [m.name for m in project.pous[0].methods] == ["Toggle", "Bump"]
+    main = project.pous[1]
+    changed = project.model_copy(
+        update={"pous": [project.pous[0], main.model_copy(update={"body": main.body + "\nstate := lamp.Drawn();"})]}
+    )
+    assert [(d.severity, d.code, d.file) for d in build_project(changed).diagnostics] == [
+        ("error", "ST-UNKNOWN-MEMBER", "PLC_PRG/body")
+    ]

@@ -72,18 +72,21 @@ def read_properties(
     if carried:
         return [Property.model_validate(item) for item in json.loads(carried)]
     found = []
+    where = node.get("name", "")
     for element in _entries(node, reader, PROPERTY_DATA, "Property"):
+        name = element.get("name", "")
         interface = reader.child(element, "interface")
         _, type_text = declarations(interface) if interface is not None else ("", None)
         accessors: dict[str, Accessor] = {}
         for kind, tag in (("get", "GetAccessor"), ("set", "SetAccessor")):
             accessor = next((c for c in element if isinstance(c.tag, str) and local(c) == tag), None)
-            if accessor is not None:
+            body = _st_body(accessor, reader, f"the {kind.upper()} of {where}.{name}") if accessor is not None else None
+            if accessor is not None and body is not None:
                 holder = reader.child(accessor, "interface")
                 text = declarations(holder)[0] if holder is not None else ""
-                accessors[kind] = Accessor(declarations=text, body=_st_body(accessor, reader))
+                accessors[kind] = Accessor(declarations=text, body=body)
         access = _access(element, interface, reader)
-        found.append(Property(name=element.get("name", ""), type=type_text or "", access=access, **accessors))
+        found.append(Property(name=name, type=type_text or "", access=access, **accessors))
     return found
 
 
@@ -104,11 +107,20 @@ def _entries(node: ET.Element | None, reader: Reader, data_name: str, tag: str) 
     ]
 
 
-def _st_body(element: ET.Element, reader: Reader) -> str:
-    """The ST text of a method's or accessor's ``<body>``."""
-    body = reader.child(element, "body")
-    st = next((c for c in reader.elements(body) if local(c) == "ST"), None) if body is not None else None
-    return text_content(st) if st is not None else ""
+def _st_body(element: ET.Element, reader: Reader, what: str) -> str | None:
+    """The ST text of a method's or accessor's ``<body>`` ("" when it has none). LadderLab's methods and accessors
+    are ST: one drawn in FBD or LD (CODESYS allows it), or written in IL, is None after a located warning naming
+    ``what``; it is left out, so a call of it is a located build error rather than an empty body's results."""
+    language = next(reader.elements(reader.child(element, "body")), None)
+    if language is None or local(language) == "ST":
+        return text_content(language) if language is not None else ""
+    reader.report(
+        "PLCOPEN-UNSUPPORTED",
+        f"{what} is written in {local(language)}; LadderLab's methods and properties are ST, so it was left out",
+        element,
+        severity="warning",
+    )
+    return None
 
 
 def write_inheritance(interface_data: ET.Element, pou: Pou) -> None:
@@ -321,16 +333,20 @@ def read_methods(
         if data.get("name") != METHOD_DATA:
             continue
         for element in (c for c in data if isinstance(c.tag, str) and local(c) == "Method"):
-            _report_implicit(element, node.get("name", ""), reader)
+            pou, name = node.get("name", ""), element.get("name", "")
+            body = _st_body(element, reader, f"the method {pou}.{name}")
+            if body is None:
+                continue
+            _report_implicit(element, pou, reader)
             interface = reader.child(element, "interface")
             text, return_type = declarations(interface) if interface is not None else ("", None)
             methods.append(
                 Method(
-                    name=element.get("name", ""),
+                    name=name,
                     **_modifiers(element, interface, reader),  # type: ignore[arg-type]  # values typed by _modifiers
                     return_type=return_type,
                     declarations=text,
-                    body=_st_body(element, reader),
+                    body=body,
                 )
             )
     return methods
