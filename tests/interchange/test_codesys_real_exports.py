@@ -329,3 +329,69 @@ def test_a_method_drawn_in_fbd_is_left_out_with_a_located_warning():
     assert [(d.severity, d.code, d.file) for d in build_project(changed).diagnostics] == [
         ("error", "ST-UNKNOWN-MEMBER", "PLC_PRG/body")
     ]
+
+
+CFC_BODY = """<body>
+                <ST>
+                  <xhtml xmlns="http://www.w3.org/1999/xhtml" />
+                </ST>
+                <addData>
+                  <data name="http://www.3s-software.com/plcopenxml/cfc" handleUnknown="implementation">
+                    <CFC>
+                      <inVariable localId="1">
+                        <position x="20" y="2" />
+                        <connectionPointOut>
+                          <expression />
+                        </connectionPointOut>
+                        <expression>TRUE</expression>
+                      </inVariable>
+                    </CFC>
+                  </data>
+                </addData>
+              </body>"""
+
+
+def test_a_cfc_method_and_a_cfc_pou_are_reported_where_they_are():
+    """CODESYS V3.5 SP21 writes a CFC chart as an empty <ST> with the chart in the body's addData (he-man86/volt,
+    packages/volt-cli/test/Volt.Engine.Tests/fixtures/codesys-pou/FB_ChildFolderStructure.plcopen.xml): the method
+    is left out with a warning, the POU's body stays empty with an error (both read as empty ST before, with only
+    the count of dropped addData)."""
+    method = FBD_METHOD.replace('name="Drawn"', 'name="Charted"').replace(
+        FBD_METHOD[FBD_METHOD.index("<body>") : FBD_METHOD.index("</body>") + len("</body>")], CFC_BODY
+    )
+    pou = f"""<pou name="FB_CHART" pouType="functionBlock">
+        <interface />
+        {CFC_BODY}
+      </pou>
+      """
+    marker = '<data name="http://www.3s-software.com/plcopenxml/property"'
+    text = INTERFACES.read_text().replace(marker, method + marker, 1)
+    text = text.replace('<pou name="PLC_PRG"', pou + '<pou name="PLC_PRG"')
+    result = import_plcopen(text.encode())
+    reported = [(d.severity, d.message, d.line) for d in result.diagnostics if d.code == "PLCOPEN-UNSUPPORTED"]
+    cfc_lines = [
+        text[:at].count("\n") + 1 for at in _find_all(text, '<data name="http://www.3s-software.com/plcopenxml/cfc"')
+    ]
+    assert reported == [
+        (
+            "warning",
+            "the method FB_LAMP.Charted is written in CFC; LadderLab's methods and properties are ST, so it was left out",
+            text[: text.index('<Method name="Charted">')].count("\n") + 1,
+        ),
+        (
+            "error",
+            "POU FB_CHART is a CODESYS CFC chart (in its body's addData), which LadderLab does not read: its body was "
+            "left empty",
+            cfc_lines[1],
+        ),
+    ]
+    assert [m.name for m in result.project.pous[0].methods] == ["Toggle", "Bump"]
+    assert [d.code for d in result.diagnostics if d.code == "PLCOPEN-ADDDATA"] == ["PLCOPEN-ADDDATA"]  # objectid only
+
+
+def _find_all(text: str, part: str) -> list[int]:
+    found, at = [], text.find(part)
+    while at >= 0:
+        found.append(at)
+        at = text.find(part, at + 1)
+    return found

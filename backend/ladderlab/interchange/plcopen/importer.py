@@ -63,9 +63,11 @@ from .methods import (
 from .sfc_import import SfcImporter
 from .vars import ATTRIBUTES_DATA, KIND_BY_LIST, VarReader, parse_type_text, write_data_type, write_type, write_var_list
 from .xml_io import (
+    CFC_DATA,
     LADDERLAB_DATA,
     PLCOPEN_NAMESPACES,
     Reader,
+    body_language,
     canonical,
     foreign_data,
     info,
@@ -85,6 +87,7 @@ BACHMANN = "www.bachmann.at/plc/plcopenxml"
 POU_DATA = "http://www.3s-software.com/plcopenxml/pou"
 DATATYPE_DATA = "http://www.3s-software.com/plcopenxml/datatype"
 _UNDERSTOOD = {
+    (CFC_DATA, "CFC"),  # reported where it is: a POU's or method's body
     (POU_DATA, "pou"),
     (DATATYPE_DATA, "dataType"),
     (MIXED_DATA, "MixedAttrsVarList"),
@@ -403,8 +406,16 @@ class _Importer:
                 pou=pou.name,
             )
         body = bodies[0] if bodies else None
-        language = next(r.elements(body), None)
-        tag = local(language) if language is not None else "ST"
+        tag, language = body_language(body, r)
+        if tag == "CFC":
+            r.report(
+                "PLCOPEN-UNSUPPORTED",
+                f"POU {pou.name} is a CODESYS CFC chart (in its body's addData), which LadderLab does not read: "
+                "its body was left empty",
+                language,
+                pou=pou.name,
+            )
+            return pou
         if tag in ("ST", "IL"):  # IL bodies are IL text like ST bodies are ST text (docs/il.md)
             return pou.model_copy(update={"body": text_content(language), "language": tag.lower()})
         assert body is not None and language is not None

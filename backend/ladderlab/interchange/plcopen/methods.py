@@ -30,7 +30,7 @@ from ...st.parser import parse_declarations, parse_source
 from ...st.printer import print_declarations, print_type
 from ...storage.st_text import method_header
 from .vars import parse_type_text, write_documentation, write_type, write_var_list
-from .xml_io import Reader, formatted_text, info_text, local, sub, text_content
+from .xml_io import Reader, body_language, formatted_text, info_text, local, sub, text_content
 
 METHOD_DATA = "http://www.3s-software.com/plcopenxml/method"
 INHERITANCE_DATA = "http://www.3s-software.com/plcopenxml/pouinheritance"
@@ -110,13 +110,14 @@ def _entries(node: ET.Element | None, reader: Reader, data_name: str, tag: str) 
 def _st_body(element: ET.Element, reader: Reader, what: str) -> str | None:
     """The ST text of a method's or accessor's ``<body>`` ("" when it has none). LadderLab's methods and accessors
     are ST: one drawn in FBD or LD (CODESYS allows it), or written in IL, is None after a located warning naming
-    ``what``; it is left out, so a call of it is a located build error rather than an empty body's results."""
-    language = next(reader.elements(reader.child(element, "body")), None)
-    if language is None or local(language) == "ST":
-        return text_content(language) if language is not None else ""
+    ``what`` (a CFC chart too: ``body_language``); it is left out, so a call of it is a located build error rather
+    than an empty body's results."""
+    tag, language = body_language(reader.child(element, "body"), reader)
+    if tag == "ST":
+        return text_content(language)
     reader.report(
         "PLCOPEN-UNSUPPORTED",
-        f"{what} is written in {local(language)}; LadderLab's methods and properties are ST, so it was left out",
+        f"{what} is written in {tag}; LadderLab's methods and properties are ST, so it was left out",
         element,
         severity="warning",
     )
