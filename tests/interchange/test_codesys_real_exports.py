@@ -20,6 +20,7 @@ from ladderlab.interchange.plcopen.exporter import export_plcopen
 from ladderlab.interchange.plcopen.importer import import_plcopen
 from ladderlab.interchange.plcopen.xml_io import LADDERLAB_DATA
 from ladderlab.simulation.build import build_project
+from tests.interchange.plcopen_helpers import xsd_errors
 
 FIXTURE = Path(__file__).parent / "data" / "codesys_application.xml"
 CODESYS = "http://www.3s-software.com/plcopenxml/"
@@ -175,9 +176,11 @@ def without_ladderlab_data(document: bytes) -> bytes:
 
 
 def test_ladderlabs_export_of_the_imported_project_imports_back_the_same():
-    """With LadderLab's own data and without it (IMPLEMENTS and the method's comment travel as CODESYS writes them)."""
+    """With LadderLab's own data and without it (IMPLEMENTS and the method's comment travel as CODESYS writes them).
+    The document is valid TC6 v2.01: a resource's tasks come before its globalVars (written after them before)."""
     project = imported().project
     document = export_plcopen(project)
+    assert xsd_errors(document) == []
     for data, warned in ((document, []), (without_ladderlab_data(document), ["FB_COUNTER.FB_init"])):
         again = import_plcopen(data)
         assert [d.message.split()[1] for d in again.diagnostics] == warned  # FB_init: a CODESYS file again
@@ -254,6 +257,7 @@ def test_the_interface_project_exported_by_ladderlab_imports_back_the_same():
     project comes back the same."""
     project = import_plcopen(INTERFACES.read_bytes()).project
     document = export_plcopen(project)
+    assert xsd_errors(document) == []
     for data in (document, without_ladderlab_data(document)):
         again = import_plcopen(data)
         assert again.diagnostics == []

@@ -53,11 +53,11 @@ def write_instances(
     node = sub(configurations, "configuration", {"name": config.name})
     for r, resource in enumerate(config.resources):
         holder = sub(node, "resource", {"name": resource.name or RESOURCE})
-        for block in var_blocks(resource.globals, f"configuration/{resource.name}/globals"):
-            write_list(holder, block)
-        for t, task in enumerate(resource.tasks):
+        for t, task in enumerate(resource.tasks):  # TC6's order: tasks, globalVars, pouInstances
             where = f"$.configuration.resources[{r}].tasks[{t}]" if project.configuration else f"$.tasks[{t}]"
             _task(holder, task, where, problems)
+        for block in var_blocks(resource.globals, f"configuration/{resource.name}/globals"):
+            write_list(holder, block)
         for program in resource.programs:
             _instance(holder, program)
         if resource.name is None or resource.on is not None or resource.globals:
