@@ -217,8 +217,8 @@ def write_interfaces(add: ET.Element, types: str) -> None:
                 write_type(sub(interface, "returnType"), method.return_type)
             for block in method.var_blocks:
                 write_var_list(interface, block)
-            typed = types.splitlines()[method.span.line : method.span.end_line]  # after the METHOD line
-            write_documentation(interface, "\n".join(typed))
+            after_header = types.splitlines()[method.span.line : method.span.end_line]  # its comment as typed
+            write_documentation(interface, "\n".join(after_header))
             returns = f" : {print_type(method.return_type)}" if method.return_type is not None else ""
             text = f"METHOD {method.name}{returns}\n{print_declarations(method.var_blocks)}".rstrip()
             formatted_text(prototype, "InterfaceAsPlainText", text)
@@ -252,10 +252,8 @@ def read_interfaces(
             lines.append(f"METHOD {method.get('name', '')}" + (f" : {return_type}" if return_type else ""))
             lines += [text] if text else []
             lines.append("END_METHOD")
-        listed = _listed(element, reader, "Properties", "Property") + _entries(
-            element, reader, PROPERTY_DATA, "Property"
-        )
-        for prop in listed:
+        properties = _listed(element, reader, "Properties", "Property")
+        for prop in properties + _entries(element, reader, PROPERTY_DATA, "Property"):
             lines += _property_prototype(prop, name, reader, declarations)
         found.append((name, "\n".join([*lines, "END_INTERFACE"])))
     return found
@@ -302,7 +300,8 @@ def _access(element: ET.Element, interface: ET.Element | None, reader: Reader) -
     """A CODESYS method's or property's access: its AccessModifiers (``<AccessModifiers Private="true"/>``), else the
     specifier of its header text (``METHOD PRIVATE M``: TwinCAT has no AccessModifiers), else PUBLIC (CODESYS writes
     ``<AccessModifiers />`` for a PUBLIC property)."""
-    for modifiers in _entries(interface, reader, ACCESS_DATA, "AccessModifiers"):
+    modifiers = next(iter(_entries(interface, reader, ACCESS_DATA, "AccessModifiers")), None)
+    if modifiers is not None:
         return next((a for a in ACCESS if modifiers.get(a.capitalize()) == "true"), "PUBLIC")
     words = _plain_header(element, reader).upper().split(":", 1)[0].split()[1:-1]  # between METHOD and the name
     return next((a for a in ACCESS if a in words), "PUBLIC")
