@@ -5,7 +5,8 @@ interval single priority>``s with the ``<pouInstance name typeName>``s they run,
 of no task. What the TC6 schema has no element for travels in LadderLab's addData (``<ll:info>``): a
 program instance's RETAIN and parameter bindings (JSON), a configuration's own VAR_GLOBAL, VAR_ACCESS and
 VAR_CONFIG texts, a resource's processor (ON), globals text as typed, or that it was written without a name.
-Another tool's document reads with the elements only.
+Another tool's document reads with the elements only; CODESYS's with its GVLs that mix qualifiers
+(``global_lists``), its intervals written as XML durations and its program calls with an empty typeName.
 
 A project's own tasks (no configuration) are written as configuration ``config`` with resource
 ``resource`` whose instances are named after their programs; a document whose configuration runs nothing
