@@ -399,3 +399,22 @@ def _find_all(text: str, part: str) -> list[int]:
         found.append(at)
         at = text.find(part, at + 1)
     return found
+
+
+def test_an_action_drawn_in_cfc_is_reported_not_imported_empty():
+    """A function block's action in CODESYS's CFC form (an empty <ST>, the chart in the body's addData) is reported
+    and left out like any action not in ST (it was imported as an empty ST action)."""
+    action = (
+        f'<actions>\n          <action name="Reset">\n            {CFC_BODY}\n          </action>\n        </actions>\n'
+    )
+    marker = '</interface>\n        <body>\n          <ST>\n            <xhtml xmlns="http://www.w3.org/1999/xhtml" />'
+    text = INTERFACES.read_text()
+    assert text.count(marker) == 1
+    text = text.replace(marker, marker.replace("<body>", action + "        <body>"))
+    result = import_plcopen(text.encode())
+    [warning] = [d for d in result.diagnostics if d.code == "PLCOPEN-UNSUPPORTED"]
+    assert (warning.message, warning.line) == (
+        "action 'Reset' of POU FB_LAMP was not imported: LadderLab imports a function block's actions with ST bodies",
+        text[: text.index('<action name="Reset">')].count("\n") + 1,
+    )
+    assert result.project.pous[0].actions == []

@@ -367,8 +367,8 @@ class _Importer:
         r = self.reader
         found: list[PouAction] = []
         for item in r.children(r.child(node, "actions"), "action"):
-            language = next(r.elements(r.child(item, "body")), None) if r.child(item, "body") is not None else None
-            if pou.kind == "function_block" and language is not None and local(language) == "ST":
+            tag, language = body_language(r.child(item, "body"), r)  # a CODESYS CFC chart is not ST
+            if pou.kind == "function_block" and language is not None and tag == "ST":
                 found.append(PouAction(name=item.get("name", ""), body=text_content(language)))
                 continue
             what = "a function block's" if pou.kind == "function_block" else "an SFC POU's or a function block's"
