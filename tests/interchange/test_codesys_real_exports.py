@@ -418,3 +418,40 @@ def test_an_action_drawn_in_cfc_is_reported_not_imported_empty():
         text[: text.index('<action name="Reset">')].count("\n") + 1,
     )
     assert result.project.pous[0].actions == []
+
+
+def test_an_sfc_action_drawn_in_cfc_is_a_located_error_not_an_empty_action():
+    """An SFC program's action in CODESYS's CFC form (the chart in the body's addData) is reported where it is (it was
+    imported as an empty ST action, which ran and did nothing)."""
+    pou = f"""<pou name="Seq" pouType="program">
+        <interface><localVars><variable name="n"><type><INT /></type></variable></localVars></interface>
+        <actions>
+          <action name="Fill">
+            {CFC_BODY}
+          </action>
+        </actions>
+        <body>
+          <SFC>
+            <step localId="1" name="Init" initialStep="true"><position x="0" y="0" />
+              <connectionPointOut formalParameter="sfc" /><connectionPointOutAction formalParameter="" /></step>
+            <actionBlock localId="2"><position x="0" y="0" />
+              <connectionPointIn><connection refLocalId="1" /></connectionPointIn>
+              <action localId="3" qualifier="N"><relPosition x="0" y="0" /><reference name="Fill" /></action>
+            </actionBlock>
+          </SFC>
+        </body>
+      </pou>
+      """
+    text = INTERFACES.read_text().replace('<pou name="PLC_PRG"', pou + '<pou name="PLC_PRG"')
+    result = import_plcopen(text.encode())
+    reported = [(d.severity, d.code, d.message, d.line) for d in result.diagnostics if d.code == "PLCOPEN-SFC"]
+    cfc = '<data name="http://www.3s-software.com/plcopenxml/cfc"'
+    assert text.count(cfc) == 1
+    assert reported == [
+        (
+            "error",
+            "PLCOPEN-SFC",
+            "action Fill is written in CFC, which LadderLab cannot import here",
+            text[: text.index(cfc)].count("\n") + 1,
+        ),
+    ]
