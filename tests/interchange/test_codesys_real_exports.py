@@ -205,7 +205,8 @@ def test_interface_members_listed_as_codesys_v35_sp21_and_twincat_write_them_are
     """codesys_interfaces.xml follows he-man86/volt, packages/volt-cli/test/Volt.Engine.Tests/fixtures/codesys-itf/
     IModuleManager.plcopen.xml and ITF_FolderedMember.plcopen.xml (CODESYS V3.5 SP21 Patch 4: <Methods> and
     <Properties> in the Interface, a property typed only in its header text) and fixtures/tc-pou/
-    FB_TcMembers.plcopen.xml (TwinCAT 3.5.13: members' declaration text as a direct child, PRIVATE only there)."""
+    FB_TcMembers.plcopen.xml (TwinCAT 3.5.13: members' declaration text as a direct child, PRIVATE only there). The
+    header of a declaration text is read after the comment or pragma opening it (IMPLEMENTS, PRIVATE)."""
     result = import_plcopen(INTERFACES.read_bytes())
     assert [d.code for d in result.diagnostics] == ["PLCOPEN-VERSION", "PLCOPEN-ADDDATA"]  # tc6_0200; objectid
     project = result.project

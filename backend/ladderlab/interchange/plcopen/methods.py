@@ -41,6 +41,7 @@ INTERFACE_DATA = "http://www.3s-software.com/plcopenxml/interface"
 ACCESS: tuple[MethodAccess, ...] = ("PUBLIC", "PRIVATE", "PROTECTED", "INTERNAL")
 _INTERFACE_EXTENDS = re.compile(r"^\s*INTERFACE\s+\w+\s+EXTENDS\s+([A-Za-z_][\w\s,]*)", re.IGNORECASE)
 _IMPLEMENTS = re.compile(r"\bIMPLEMENTS\s+([A-Za-z_][\w\s,]*)", re.IGNORECASE)
+_LEADING = re.compile(r"^(?:\s+|//[^\n]*|\(\*[\s\S]*?\*\)|/\*[\s\S]*?\*/|\{[^}]*\})*")  # comments, pragmas
 
 
 def oo_attributes(pou: Pou) -> dict[str, object]:
@@ -288,12 +289,14 @@ def _property_prototype(
 
 
 def _plain_header(element: ET.Element, reader: Reader) -> str:
-    """The first line of an element's ``InterfaceAsPlainText`` (in its addData as CODESYS writes it, or a direct
-    child as TwinCAT does); empty when it has none."""
+    """The header line of an element's ``InterfaceAsPlainText`` (in its addData as CODESYS writes it, or a direct
+    child as TwinCAT does): its first line after the comments and pragmas that may open it (``// Registers a
+    module``, ``{attribute 'reflection'}``); empty when it has none."""
     holders = _entries(element, reader, PLAINTEXT_DATA, "InterfaceAsPlainText") + reader.children(
         element, "InterfaceAsPlainText"
     )
-    return text_content(holders[0]).strip().split("\n", 1)[0] if holders else ""
+    text = _LEADING.sub("", text_content(holders[0])) if holders else ""
+    return text.split("\n", 1)[0].strip()
 
 
 def _access(element: ET.Element, interface: ET.Element | None, reader: Reader) -> MethodAccess:
