@@ -456,3 +456,21 @@ def test_an_sfc_action_drawn_in_cfc_is_a_located_error_not_an_empty_action():
             text[: text.index(cfc)].count("\n") + 1,
         ),
     ]
+
+
+def test_a_pous_own_documentation_opens_its_declarations():
+    """TC6's <pou><documentation> (after its addData, tc6_xml_v201.xsd) is the POU's comment when its interface has
+    none: the declarations start with it as // lines (it was dropped)."""
+    marker = """                </addData>
+              </pou>
+            </data>
+            <data name="http://www.3s-software.com/plcopenxml/libraries\""""
+    text = FIXTURE.read_text()
+    assert text.count(marker) == 1
+    documented = marker.replace(
+        "</addData>\n",
+        '</addData>\n<documentation><xhtml xmlns="http://www.w3.org/1999/xhtml"> Fills the tank.\n'
+        " Every scan.</xhtml></documentation>\n",
+    )
+    main = imported(text.replace(marker, documented)).project.pous[2]
+    assert main.declarations.startswith("// Fills the tank.\n// Every scan.\nVAR\n    tank : FB_TANK;")

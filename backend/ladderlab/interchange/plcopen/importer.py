@@ -102,11 +102,13 @@ _UNDERSTOOD = {
 }
 
 
-def _declarations(r, reader: VarReader, interface: ET.Element | None) -> str:
+def _declarations(r, reader: VarReader, interface: ET.Element | None, pou: ET.Element | None = None) -> str:
     """The ST text of an interface's typed variable lists, after its ``<documentation>`` (CODESYS writes there the
-    comment above a POU's or method's VAR blocks, without its ``//``: put back on each line)."""
+    comment above a POU's or method's VAR blocks, without its ``//``: put back on each line), else the ``pou``'s
+    own (TC6's ``<pou><documentation>``)."""
     lists = [c for c in r.elements(interface) if local(c) in KIND_BY_LIST]
-    comment = text_content(r.child(interface, "documentation")).strip("\n")
+    documented = r.child(interface, "documentation")
+    comment = text_content(documented if documented is not None else r.child(pou, "documentation")).strip("\n")
     lines = [f"//{line}" for line in comment.splitlines()] if comment.strip() else []
     return "\n".join([*lines, print_declarations([reader.var_block(c) for c in lists]).rstrip()]).strip()
 
@@ -298,7 +300,7 @@ class _Importer:
         reader = VarReader(r, name)
         ours = info(interface, r)
         lists = [c for c in r.elements(interface) if local(c) in KIND_BY_LIST]
-        declarations = _declarations(r, reader, interface)
+        declarations = _declarations(r, reader, interface, node)
         carried = info_text(ours, "declarations")
         if carried is not None and self.same(lists, carried, _declaration_elements):
             declarations = carried
