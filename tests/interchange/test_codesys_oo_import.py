@@ -178,23 +178,22 @@ def test_codesys_oo_documents_in_shared_external_import_and_build():
         assert [d.format() for d in build_project(result.project).diagnostics if d.severity == "error"] == [], path
 
 
-def test_a_property_of_a_codesys_interface_is_reported_not_dropped_silently():
+def test_a_property_in_a_codesys_interfaces_adddata_is_read():
+    """A PROPERTY given as an entry of the Interface's addData (as its methods are here) becomes a prototype with the
+    accessors it has (real CODESYS V3.5 SP21 files list them in <Properties>: test_codesys_real_exports.py)."""
     text = FIXTURE.read_text()
     prop = (
         '<data name="http://www.3s-software.com/plcopenxml/property" handleUnknown="implementation">'
-        '<Property name="Level"><interface><returnType><INT /></returnType></interface></Property></data>'
+        '<Property name="Level"><interface><returnType><INT /></returnType></interface><GetAccessor /></Property>'
+        "</data>"
     )
     marker = '<Interface name="IBase" ObjectId="5f1c1a35-0d87-4bd4-9f2c-3a1b7d1b0a10">\n        <addData>'
     assert marker in text
     result = import_plcopen(text.replace(marker, marker + prop).encode())
-    assert [(d.code, d.severity, d.message) for d in result.diagnostics if d.code == "PLCOPEN-UNSUPPORTED"] == [
-        (
-            "PLCOPEN-UNSUPPORTED",
-            "warning",
-            "the PROPERTY Level of INTERFACE IBase was left out: LadderLab does not read CODESYS's interface "
-            "properties yet (declare it in the INTERFACE's ST text)",
-        )
-    ]
+    assert [d.code for d in result.diagnostics] == ["PLCOPEN-VERSION", "PLCOPEN-ADDDATA"]
+    assert result.project.types.startswith(
+        "INTERFACE IBase\nMETHOD Total : INT\nEND_METHOD\nPROPERTY Level : INT\nGET END_GET\nEND_PROPERTY\nEND_INTERFACE"
+    )
 
 
 def test_the_st_export_writes_every_specifier_and_imports_back_the_same():

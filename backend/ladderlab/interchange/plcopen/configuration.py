@@ -5,7 +5,8 @@ interval single priority>``s with the ``<pouInstance name typeName>``s they run,
 of no task. What the TC6 schema has no element for travels in LadderLab's addData (``<ll:info>``): a
 program instance's RETAIN and parameter bindings (JSON), a configuration's own VAR_GLOBAL, VAR_ACCESS and
 VAR_CONFIG texts, a resource's processor (ON), globals text as typed, or that it was written without a name.
-Another tool's document reads with the elements only.
+Another tool's document reads with the elements only; CODESYS's with its GVLs that mix qualifiers
+(``global_lists``), its intervals written as XML durations and its program calls with an empty typeName.
 
 A project's own tasks (no configuration) are written as configuration ``config`` with resource
 ``resource`` whose instances are named after their programs; a document whose configuration runs nothing
@@ -15,8 +16,10 @@ and holds only globals reads back as the project's globals.
 from __future__ import annotations
 
 import json
+import re
 import xml.etree.ElementTree as ET
 from collections.abc import Callable
+from decimal import Decimal
 
 from ...model.diagnostics import Diagnostic
 from ...model.project import Configuration, ProgramInstance, Project, Resource, Task
@@ -26,6 +29,8 @@ from .xml_io import Reader, info, info_text, ladderlab_data, sub
 
 CONFIGURATION = "config"
 RESOURCE = "resource"
+MIXED_DATA = "http://www.3s-software.com/plcopenxml/mixedattrsvarlist"
+_DURATION = re.compile(r"P(?:(\d+)D)?(?:T(?:(\d+)H)?(?:(\d+)M)?(?:(\d+(?:\.\d+)?)S)?)?")
 
 VarBlocks = Callable[[str, str], list[ast.VarBlock]]  # (text, file) -> parsed VAR blocks
 WriteList = Callable[[ET.Element, ast.VarBlock], ET.Element]
@@ -49,11 +54,11 @@ def write_instances(
     node = sub(configurations, "configuration", {"name": config.name})
     for r, resource in enumerate(config.resources):
         holder = sub(node, "resource", {"name": resource.name or RESOURCE})
-        for block in var_blocks(resource.globals, f"configuration/{resource.name}/globals"):
-            write_list(holder, block)
-        for t, task in enumerate(resource.tasks):
+        for t, task in enumerate(resource.tasks):  # TC6's order: tasks, globalVars, pouInstances
             where = f"$.configuration.resources[{r}].tasks[{t}]" if project.configuration else f"$.tasks[{t}]"
             _task(holder, task, where, problems)
+        for block in var_blocks(resource.globals, f"configuration/{resource.name}/globals"):
+            write_list(holder, block)
         for program in resource.programs:
             _instance(holder, program)
         if resource.name is None or resource.on is not None or resource.globals:
@@ -107,7 +112,7 @@ def read_instances(
             configurations[1],
             severity="warning",
         )
-    lists = [g for c in configurations for g in reader.children(c, "globalVars")]
+    lists = [g for c in configurations for g in global_lists(reader, c)]
     if not configurations:
         return read_list(lists, None), None, []
     node = configurations[0]
@@ -151,15 +156,57 @@ def _resource(reader: Reader, node: ET.Element, read_list: Callable[[list[ET.Ele
     return Resource(
         name=None if unnamed else node.get("name", RESOURCE),
         on=ours.get("on") if ours is not None else None,
-        globals=read_list(reader.children(node, "globalVars"), info_text(ours, "globals")),
+        globals=read_list(global_lists(reader, node), info_text(ours, "globals")),
         tasks=[_read_task(reader, t) for t in reader.children(node, "task")],
         programs=[_read_instance(reader, i) for i in reader.children(node, "pouInstance")],
     )
 
 
+def global_lists(reader: Reader, holder: ET.Element) -> list[ET.Element]:
+    """The ``<globalVars>`` of a configuration or resource. CODESYS writes a GVL that mixes qualifiers (VAR_GLOBAL
+    CONSTANT and VAR_GLOBAL) as one list with the first block's qualifiers for every variable, and the blocks as
+    they are in its ``.../plcopenxml/mixedattrsvarlist`` entry: those blocks are the GVL."""
+    found = []
+    for node in reader.children(holder, "globalVars"):
+        split = [
+            block
+            for data in reader.children(reader.child(node, "addData"), "data")
+            if data.get("name") == MIXED_DATA
+            for mixed in reader.children(data, "MixedAttrsVarList")
+            for block in reader.children(mixed, "globalVars")
+        ]
+        found += split or [node]
+    return found
+
+
+def _duration(text: str) -> str:
+    """CODESYS writes a task's interval as an XML Schema duration (``PT0.01S``); LadderLab's is an IEC TIME
+    literal (``T#10ms``). Any other text is kept as it is (the build reports one that is not a TIME)."""
+    found = _DURATION.fullmatch(text)
+    if found is None or text in ("P", "PT") or text.endswith("T"):
+        return text
+    days, hours, minutes = (int(g or 0) for g in found.groups()[:3])
+    seconds = Decimal(found.group(4) or 0)
+    whole, fraction = int(seconds), seconds - int(seconds)
+    nanoseconds = int(fraction * 1_000_000_000)
+    if fraction * 1_000_000_000 != nanoseconds:
+        return text  # finer than a nanosecond: no TIME literal says it; the build reports it
+    parts = [
+        (days, "d"),
+        (hours, "h"),
+        (minutes, "m"),
+        (whole, "s"),
+        (nanoseconds // 1_000_000, "ms"),
+        (nanoseconds // 1000 % 1000, "us"),
+        (nanoseconds % 1000, "ns"),
+    ]
+    return "T#" + ("".join(f"{value}{unit}" for value, unit in parts if value) or "0s")
+
+
 def _read_task(reader: Reader, node: ET.Element) -> Task:
     name = node.get("name", "")
     interval, single = node.get("interval"), node.get("single")
+    interval = _duration(interval) if interval else interval
     if not interval and not single:
         reader.report(
             "PLCOPEN-CONFIG",
@@ -198,7 +245,7 @@ def _read_instance(reader: Reader, node: ET.Element) -> ProgramInstance:
         bindings[kind] = value
     return ProgramInstance(
         name=node.get("name", ""),
-        type=node.get("typeName", ""),
+        type=node.get("typeName") or node.get("name", ""),  # CODESYS: a task's program call, typeName empty
         retain=retain if retain in ("RETAIN", "NON_RETAIN") else None,
         **bindings,
     )

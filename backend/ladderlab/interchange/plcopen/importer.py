@@ -41,7 +41,7 @@ from .body import (
     group_by_ladderlab,
     read_network_list,
 )
-from .configuration import read_instances
+from .configuration import MIXED_DATA, read_instances
 from .exporter import diagram_writer
 from .fbd_import import FbdImporter, fbd_groups, place_comments
 from .graph import read_graph, resolve_continuations
@@ -63,9 +63,11 @@ from .methods import (
 from .sfc_import import SfcImporter
 from .vars import ATTRIBUTES_DATA, KIND_BY_LIST, VarReader, parse_type_text, write_data_type, write_type, write_var_list
 from .xml_io import (
+    CFC_DATA,
     LADDERLAB_DATA,
     PLCOPEN_NAMESPACES,
     Reader,
+    body_language,
     canonical,
     foreign_data,
     info,
@@ -82,7 +84,13 @@ from .xml_safety import XmlInputError, parse_untrusted_xml
 KIND = {"program": "program", "functionBlock": "function_block", "function": "function"}
 _HEADER = re.compile(r"^(PROGRAM|FUNCTION_BLOCK|FUNCTION)\s", re.IGNORECASE)
 BACHMANN = "www.bachmann.at/plc/plcopenxml"
+POU_DATA = "http://www.3s-software.com/plcopenxml/pou"
+DATATYPE_DATA = "http://www.3s-software.com/plcopenxml/datatype"
 _UNDERSTOOD = {
+    (CFC_DATA, "CFC"),  # reported where it is: a POU's or method's body
+    (POU_DATA, "pou"),
+    (DATATYPE_DATA, "dataType"),
+    (MIXED_DATA, "MixedAttrsVarList"),
     (BACHMANN, "textDeclaration"),
     (BACHMANN, "negated"),
     (METHOD_DATA, "Method"),
@@ -94,10 +102,15 @@ _UNDERSTOOD = {
 }
 
 
-def _declarations(r, reader: VarReader, interface: ET.Element | None) -> str:
-    """The ST text of an interface's typed variable lists."""
+def _declarations(r, reader: VarReader, interface: ET.Element | None, pou: ET.Element | None = None) -> str:
+    """The ST text of an interface's typed variable lists, after its ``<documentation>`` (CODESYS writes there the
+    comment above a POU's or method's VAR blocks, without its ``//``: put back on each line), else the ``pou``'s
+    own (TC6's ``<pou><documentation>``)."""
     lists = [c for c in r.elements(interface) if local(c) in KIND_BY_LIST]
-    return print_declarations([reader.var_block(c) for c in lists]).rstrip()
+    documented = r.child(interface, "documentation")
+    comment = text_content(documented if documented is not None else r.child(pou, "documentation")).strip("\n")
+    lines = [f"//{line}" for line in comment.splitlines()] if comment.strip() else []
+    return "\n".join([*lines, print_declarations([reader.var_block(c) for c in lists]).rstrip()]).strip()
 
 
 def _method_interface(r, reader: VarReader, interface: ET.Element) -> tuple[str, str | None]:
@@ -154,21 +167,25 @@ class _Importer:
 
     def project(self, root: ET.Element) -> Project:
         r = self.reader
+        configurations = r.children(r.path(root, "instances", "configurations"), "configuration")
         if local(root) == "pou":
             pou_nodes, header = [root], None
         else:
             pou_nodes, header = r.children(r.path(root, "types", "pous"), "pou"), r.child(root, "contentHeader")
+            pou_nodes += self.application_entries(configurations, POU_DATA, "pou")
         ours = info(root, r)
         name = self.name or (header.get("name") if header is not None else None) or "imported"
         interfaces = [self.interface(node) for node in pou_nodes]
         signatures = Signatures([p for p in interfaces if p is not None])
         pous = [self.pou(node, p, signatures) for node, p in zip(pou_nodes, interfaces) if p is not None]
         self.collect_foreign(root)
-        types = self.types(r.path(root, "types", "dataTypes"), info_text(ours, "types"))
+        data_types = r.children(r.path(root, "types", "dataTypes"), "dataType") + self.application_entries(
+            configurations, DATATYPE_DATA, "dataType"
+        )
+        types = self.types(data_types, info_text(ours, "types"))
         types = _with_interfaces(
             types, read_interfaces(root, r, lambda holder: _method_interface(r, VarReader(r), holder))
         )
-        configurations = r.children(r.path(root, "instances", "configurations"), "configuration")
         carried = info_text(ours, "globals")
         read_list = lambda lists, own: self.globals(lists, own if own is not None else carried)  # noqa: E731
         globals_, configuration, tasks = read_instances(r, configurations, read_list)
@@ -193,6 +210,20 @@ class _Importer:
             libraries=libraries,
             typing=self.typing(ours, root),
         )
+
+    def application_entries(self, configurations: list[ET.Element], data_name: str, tag: str) -> list[ET.Element]:
+        """The POUs or data types of CODESYS's applications: a whole project's export writes what is under an
+        application in the resource's addData (``.../plcopenxml/pou``, ``.../plcopenxml/datatype``), what is
+        outside one in ``types``."""
+        r = self.reader
+        return [
+            element
+            for configuration in configurations
+            for resource in r.children(configuration, "resource")
+            for data in r.children(r.child(resource, "addData"), "data")
+            if data.get("name") == data_name
+            for element in r.children(data, tag)
+        ]
 
     def typing(self, ours: ET.Element | None, root: ET.Element) -> Typing:
         """The type rules LadderLab's data names (IEC when none); unknown rules are reported, and IEC is used."""
@@ -269,7 +300,7 @@ class _Importer:
         reader = VarReader(r, name)
         ours = info(interface, r)
         lists = [c for c in r.elements(interface) if local(c) in KIND_BY_LIST]
-        declarations = _declarations(r, reader, interface)
+        declarations = _declarations(r, reader, interface, node)
         carried = info_text(ours, "declarations")
         if carried is not None and self.same(lists, carried, _declaration_elements):
             declarations = carried
@@ -338,8 +369,8 @@ class _Importer:
         r = self.reader
         found: list[PouAction] = []
         for item in r.children(r.child(node, "actions"), "action"):
-            language = next(r.elements(r.child(item, "body")), None) if r.child(item, "body") is not None else None
-            if pou.kind == "function_block" and language is not None and local(language) == "ST":
+            tag, language = body_language(r.child(item, "body"), r)  # a CODESYS CFC chart is not ST
+            if pou.kind == "function_block" and language is not None and tag == "ST":
                 found.append(PouAction(name=item.get("name", ""), body=text_content(language)))
                 continue
             what = "a function block's" if pou.kind == "function_block" else "an SFC POU's or a function block's"
@@ -377,8 +408,16 @@ class _Importer:
                 pou=pou.name,
             )
         body = bodies[0] if bodies else None
-        language = next(r.elements(body), None)
-        tag = local(language) if language is not None else "ST"
+        tag, language = body_language(body, r)
+        if tag == "CFC":
+            r.report(
+                "PLCOPEN-UNSUPPORTED",
+                f"POU {pou.name} is a CODESYS CFC chart (in its body's addData), which LadderLab does not read: "
+                "its body was left empty",
+                language,
+                pou=pou.name,
+            )
+            return pou
         if tag in ("ST", "IL"):  # IL bodies are IL text like ST bodies are ST text (docs/il.md)
             return pou.model_copy(update={"body": text_content(language), "language": tag.lower()})
         assert body is not None and language is not None
@@ -428,8 +467,7 @@ class _Importer:
         expected = regenerate(carried)
         return expected is not None and [canonical(e) for e in expected] == [canonical(e) for e in actual]
 
-    def types(self, data_types: ET.Element | None, carried: str | None) -> str:
-        elements = self.reader.children(data_types, "dataType")
+    def types(self, elements: list[ET.Element], carried: str | None) -> str:
         if carried is not None and self.same(elements, carried, _type_elements):
             return carried
         reader = VarReader(self.reader)

@@ -36,7 +36,7 @@ from ...model.sfc_graph import ImportedStep, ImportedTransition, UnstructuredCha
 from ...st import ast
 from ...st.parser import parse_expression, parse_statements
 from .sfc_export import write_sfc_pou
-from .xml_io import Reader, canonical, info, info_text, local, text_content
+from .xml_io import Reader, body_language, canonical, info, info_text, local, text_content
 
 #: Reads a ``<body>`` written in LD or FBD: (language, networks) or None (reported).
 DiagramReader = Callable[[ET.Element, str], "tuple[str, LdBody | FbdBody] | None"]
@@ -156,8 +156,7 @@ class SfcImporter:
         self, body: ET.Element | None, what: str, action: str | None = None
     ) -> tuple[str, str | LdBody | FbdBody | SfcChart] | None:
         """An action's or named transition's body; an action's (``action``: its name) may be written in SFC."""
-        language = next(self.r.elements(body), None)
-        tag = local(language) if language is not None else "ST"
+        tag, language = body_language(body, self.r)  # CODESYS's CFC chart (an empty ST) is reported below
         if tag == "ST":
             return "st", text_content(language)
         if tag == "IL":  # SFC-02: an action or named transition written in IL (docs/il.md)

@@ -163,6 +163,18 @@ def write_var_list(parent: ET.Element, block: ast.VarBlock) -> ET.Element:
     return node
 
 
+def write_documentation(interface: ET.Element, declarations: str) -> None:
+    """The ``//`` lines that open a declarations text as the interface's ``<documentation>``, without the ``//``: where
+    CODESYS writes the comment above a POU's or method's VAR blocks (the import puts the ``//`` back)."""
+    lines = []
+    for line in declarations.splitlines():
+        if not line.startswith("//"):
+            break
+        lines.append(line[2:])
+    if lines:
+        formatted_text(interface, "documentation", "\n".join(lines))
+
+
 def write_data_type(parent: ET.Element, decl: ast.TypeDecl) -> None:
     node = sub(parent, "dataType", {"name": decl.name})
     write_type(sub(node, "baseType"), decl.type)

@@ -198,6 +198,19 @@ class Reader:
         )
 
 
+CFC_DATA = "http://www.3s-software.com/plcopenxml/cfc"
+
+
+def body_language(body: ET.Element | None, reader: Reader) -> tuple[str, ET.Element | None]:
+    """The language of a ``<body>`` (``ST`` when it is empty) and its element. CODESYS writes a CFC chart as an
+    empty ``<ST>`` with the chart in the body's addData (``.../plcopenxml/cfc``): that is ``CFC``."""
+    language = next(reader.elements(body), None)
+    charts = [d for d in reader.children(reader.child(body, "addData"), "data") if d.get("name") == CFC_DATA]
+    if charts:
+        return "CFC", charts[0]
+    return (local(language) if language is not None else "ST"), language
+
+
 def text_content(element: ET.Element | None) -> str:
     """The text of a formattedText element (``<xhtml:p>``, ``<xhtml:xhtml>``, vendor ``<pre>`` ...), as written.
 
