@@ -118,6 +118,30 @@ def test_enumerations_with_a_base_type_and_explicit_values():
     assert scans(text, 1, "lv", "top", "m", "code", "on") == [[-10, 10, 2, 3, True]]
 
 
+@pytest.mark.parametrize("variant", ["fast", "debug"])
+def test_codesys_qualified_enumeration_values_are_the_typed_literals(variant):
+    """CODESYS writes Level.High where IEC writes Level#High (in bodies, CASE labels and initial values): the same
+    values as the test above, worked out from the declaration (High 10, Low -10, Mode.Step after Run 1: 2)."""
+    text = program(
+        "lv : Level; top : Level := Level.High; m : Mode := Mode.Step; code : INT; on : BOOL;",
+        "CASE top OF Level.High: code := 3; Level.Low: code := 1; END_CASE; on := m <> Mode.Off; lv := Level.Low;",
+        TYPES,
+    )
+    assert scans(text, 1, "lv", "top", "m", "code", "on", variant=variant) == [[-10, 10, 2, 3, True]]
+
+
+def test_a_variable_named_like_an_enumeration_keeps_its_members_and_unknown_values_are_named():
+    """A declared variable wins over the type of the same name (its member is read); Level.Hihg is no value."""
+    shadowed = program(
+        "Level : Point; x : INT;",
+        "Level.y := 4; x := Level.y;",
+        "TYPE Point : STRUCT y : INT; END_STRUCT; END_TYPE\n" + TYPES,
+    )
+    assert scans(shadowed, 1, "x") == [[4]]
+    found = errors(program("lv : Level;", "lv := Level.Hihg;", TYPES))
+    assert len(found) == 1 and "ST-UNKNOWN-VAR: 'Hihg' is not a value of Level - did you mean 'High'?" in found[0], found
+
+
 @pytest.mark.parametrize(
     "types, message",
     [

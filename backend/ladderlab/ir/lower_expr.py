@@ -113,7 +113,7 @@ def _lower(node: ast.Expr, ctx: PouContext, expected: IrType | None) -> Expr:
         return _folded(node, ctx.ir_type(ty))
     if isinstance(node, (ast.BoolLit, ast.StringLit, ast.TimeLit, ast.TypedLit)):
         return _literal(node, ctx)
-    if isinstance(node, ast.Name) and isinstance(node.ref, EnumValue):
+    if isinstance(node, (ast.Name, ast.Member)) and isinstance(node.ref, EnumValue):  # Green, Color.Green
         return Const(node.ref.value, ctx.ir_type(ty))
     if ty is t.NULL:
         return Const(None, ctx.ir_type(ty))

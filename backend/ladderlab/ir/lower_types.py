@@ -294,6 +294,8 @@ class TypeLowering:
             if isinstance(node.ty, t.EnumType) and isinstance(node.value, ast.Name):
                 return node.ty.values[node.value.name.upper()][1]
             return self.raw_constant(node.value, depth + 1)
+        if isinstance(node, ast.Member) and isinstance(node.ref, EnumValue):  # Color.Green
+            return node.ref.value
         if isinstance(node, ast.Name):
             if isinstance(node.ref, EnumValue):
                 return node.ref.value

@@ -225,6 +225,9 @@ class BodyChecker:
         return t.Elementary(address.default_type)
 
     def _member(self, node: ast.Member) -> Type:
+        qualified = self._qualified_enum_value(node)
+        if qualified is not None:
+            return qualified
         base = self.expr(node.base)
         upper = node.name.upper()
         if base is ERROR:
@@ -275,6 +278,24 @@ class BodyChecker:
             )
             return ERROR
         return t.elementary(part_type(width)) or ERROR
+
+    def _qualified_enum_value(self, node: ast.Member) -> Type | None:
+        """CODESYS's ``Color.Green`` for IEC's ``Color#Green`` (ed. 3 writes the type name too, with '#'): the base
+        names an enumeration type and no variable, program or property. None: not such a name."""
+        base = node.base
+        if not isinstance(base, ast.Name) or self.lookup(base.name) is not None:
+            return None
+        typedef = self.result.types.get(base.name.upper())
+        if typedef is None or not isinstance(typedef.type, t.EnumType) or base.name.upper() in self.result.pous:
+            return None
+        enum = typedef.type
+        if node.name.upper() not in enum.values:
+            message = f"'{node.name}' is not a value of {typedef.name}"
+            self.report("ST-UNKNOWN-VAR", message + did_you_mean(node.name, [v[0] for v in enum.values.values()]), node)
+            return ERROR
+        written, value = enum.values[node.name.upper()]
+        node.ref = EnumValue(enum, written, value)
+        return enum
 
     def _fb_member(self, node: ast.Member, base: t.FbType) -> Type:
         upper = node.name.upper()
