@@ -14,7 +14,7 @@ from ..process_image import ProcessImage, image_view_name, key_of, located_addre
 from ..stdlib import STANDARD_FBS
 from . import names
 from .layout import Layout
-from .mentions import addresses_in_out
+from .mentions import Mentions, addresses_in_out, mentions
 from .runtime import UNSET
 from .typeinfo import runtime_name
 
@@ -128,6 +128,7 @@ class ModuleContext:
     tasks: list[ir.TaskSpec] = field(default_factory=list)
     diagnostics: list[Diagnostic] = field(default_factory=list)
     _bound_keys: dict[object, str] = field(default_factory=dict)
+    _mentions: dict[str, Mentions] = field(default_factory=dict)
 
     def __post_init__(self) -> None:
         self.pous = {name.upper(): pou for name, pou in self.program.pous.items()}
@@ -143,7 +144,14 @@ class ModuleContext:
     def in_outs_addressed(self) -> bool:
         """Whether some POU takes REF()/ADR() of its own VAR_IN_OUT (mentions.addresses_in_out): only then does a
         call pass its own call's variables to an in-out with the call's frame (runtime.FramedPair)."""
-        return any(addresses_in_out(pou) for pou in self.pous.values())
+        return any(addresses_in_out(self.mentions(pou)) for pou in self.pous.values())
+
+    def mentions(self, pou: ir.Pou) -> Mentions:
+        """What the POU's body mentions (mentions.mentions), walked once per POU: several questions need it."""
+        found = self._mentions.get(pou.name.upper())
+        if found is None or found.pou is not pou:
+            found = self._mentions[pou.name.upper()] = mentions(pou)
+        return found
 
     @property
     def located(self) -> list[ir.Slot]:

@@ -23,7 +23,7 @@ from ...ir import types as t
 from . import names
 from .context import CodegenError, ModuleContext, std_fb_class
 from .layout import Layout, Place
-from .mentions import addressed_locals, addressed_temps, passed_in_out, referenced_locals, walk
+from .mentions import addressed_locals, addressed_temps, passed_in_out, referenced_locals
 from .typeinfo import is_composite
 
 
@@ -175,13 +175,14 @@ def framed_variables(module: ModuleContext, pou: ir.Pou) -> set[str]:
     ``runtime.Frame``: a FUNCTION's own variables, a PROGRAM's / FB's VAR_TEMP, that the body takes REF()/ADR() of,
     and, when some POU takes REF()/ADR() of its VAR_IN_OUT, those passed to an in-out (the reference the callee
     takes refers to them). Empty for the many POUs that do neither: their code has no frame."""
+    found = module.mentions(pou)
     if pou.kind == "function":
-        own, kept = addressed_locals(pou), None
+        own, kept = addressed_locals(found), None
     else:
-        own, kept = addressed_temps(pou), {s.name.upper() for s in pou.slots if s.var_class == "VAR_TEMP"}
+        own, kept = addressed_temps(found), {s.name.upper() for s in pou.slots if s.var_class == "VAR_TEMP"}
     if not module.in_outs_addressed:
         return own
-    passed = passed_in_out(pou, lambda fb, pin: _in_out_pin(module, fb, pin))
+    passed = passed_in_out(found, lambda fb, pin: _in_out_pin(module, fb, pin))
     return own | (passed if kept is None else passed & kept)
 
 
@@ -203,7 +204,8 @@ def temp_locals(module: ModuleContext, pou: ir.Pou) -> dict[str, str]:
         for s in pou.slots
         if s.hidden and s.var_class == "VAR_TEMP" and s.address is None and isinstance(s.type, t.Elementary)
     }
-    if not candidates or any(type(s) is ir.Jump for block in pou.blocks for s in walk(block.statements)):
+    found = module.mentions(pou)
+    if not candidates or found.jumps:
         return {}
-    referenced = referenced_locals(pou, by_value=lambda fb: std_fb_class(fb) is not None)
+    referenced = referenced_locals(found, by_value=lambda fb: std_fb_class(fb) is not None)
     return {name: local for name, local in candidates.items() if name not in referenced}
