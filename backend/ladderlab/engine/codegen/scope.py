@@ -42,7 +42,7 @@ class Scope:
         self.pou = pou
         self.function = pou.kind == "function"
         self.layout: Layout | None = None if self.function else module.layouts[pou.name.upper()]
-        self.slots = {s.name.upper(): s for s in pou.slots if s.var_class != "VAR_EXTERNAL"}
+        self.slots = {names.key(s.name): s for s in pou.slots if s.var_class != "VAR_EXTERNAL"}
         self.in_outs = [s for s in self.slots.values() if s.var_class == "VAR_IN_OUT"]
         self.boxed: set[str] = set()
         #: the variables whose references die with the call (framed_variables): its calls have a Frame
@@ -88,8 +88,8 @@ class Scope:
         code, ty, page = found
         if page:  # every chunk function loads the pages its own statements use
             self.pages_used.add(page)
-        if var.scope == "local" and self.temp_locals and var.name.upper() in self.temp_locals:
-            self.temps_used.add(var.name.upper())  # ... and the temporaries they use
+        elif code.startswith("ll_t_"):  # ... and the temporaries they use (only temp_locals' are named so)
+            self.temps_used.add(var.name.upper())
         return code, ty
 
     def _root(self, var: ir.Var) -> tuple[str, t.IrType, int]:
@@ -100,16 +100,16 @@ class Scope:
         if slot.address is not None:  # a located variable: its process image view (engine/process_image.py)
             view, key = self.module.image_view(slot, world=self.pou.live_clock)
             return f"{view}[{key}]", slot.type, 0
-        attr = names.slot(slot.name)
         if var.scope == "global":
             place = self.module.globals.get(var.name)
-            return f"{global_owner(place.page)}.{attr}", slot.type, 0  # type: ignore[union-attr]
+            return f"{global_owner(place.page)}.{place.attr}", slot.type, 0  # type: ignore[union-attr]
         if slot.var_class == "VAR_IN_OUT":
             if is_composite(slot.type):
-                return attr, slot.type, 0
+                return names.slot(slot.name), slot.type, 0
             key = names.escape(slot.name)
             return f"ll_c_{key}[ll_k_{key}]", slot.type, 0
         if self.function:
+            attr = names.slot(slot.name)
             return (f"{attr}[0]" if slot.name.upper() in self.boxed else attr), slot.type, 0
         local = self.temp_locals.get(slot.name.upper())
         if local is not None:
