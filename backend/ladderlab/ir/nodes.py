@@ -51,6 +51,14 @@ def diagram_origin(pou: str, network: str, element: str | None = None) -> Origin
 _ORIGIN_SLOTS = tuple(getattr(Origin, name).__set__ for name in Origin.__slots__)
 
 
+def upper_name(name: str) -> str:
+    """``name.upper()``, but the name's own string when it is upper case already: a large POU's slots, accesses and
+    the code generator's tables share one string per name instead of a copy each (a 50,000-network POU has
+    200,000 variables: ~10 MB a copy; issue 27)."""
+    upper = name.upper()
+    return name if upper == name else upper
+
+
 def node_fields(node: Any) -> dict[str, Any]:
     """An IR node's fields by name (the nodes have slots, no ``__dict__``: memory and collections of a large
     build, issue 27)."""

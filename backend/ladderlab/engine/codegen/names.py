@@ -52,13 +52,6 @@ def slot(name: str) -> str:
     return "v_" + escape(name)
 
 
-def key(name: str) -> str:
-    """The upper-case key of an IEC name in a table: the name's own string when it is upper case already, so the
-    tables of a large POU's slots hold no copy of each name (a 50,000-network POU has 200,000 slots)."""
-    upper = name.upper()
-    return name if upper == name else upper
-
-
 def pou_class(name: str) -> str:
     return "P_" + escape(name)
 

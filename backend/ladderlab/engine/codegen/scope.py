@@ -42,7 +42,7 @@ class Scope:
         self.pou = pou
         self.function = pou.kind == "function"
         self.layout: Layout | None = None if self.function else module.layouts[pou.name.upper()]
-        self.slots = {names.key(s.name): s for s in pou.slots if s.var_class != "VAR_EXTERNAL"}
+        self.slots = {ir.upper_name(s.name): s for s in pou.slots if s.var_class != "VAR_EXTERNAL"}
         self.in_outs = [s for s in self.slots.values() if s.var_class == "VAR_IN_OUT"]
         self.boxed: set[str] = set()
         #: the variables whose references die with the call (framed_variables): its calls have a Frame
