@@ -83,11 +83,11 @@ def run_simulation(connection: Connection, spec: dict[str, Any]) -> None:
     link = Link(connection)
     limit_memory(spec.get("memory_bytes"))
     try:
-        with collector_paused(for_life=True):  # this process runs this one program until it ends: frozen
-            make = spec.get("make")
-            if make is not None:  # another way in (remote.Maker): e.g. a failed test's last state
-                sim = make.function(watchdog_s=spec["watchdog_s"], **make.args)
-            else:
+        make = spec.get("make")
+        if make is not None:  # another way in (remote.Maker): e.g. a failed test's last state (it runs scans)
+            sim = make.function(watchdog_s=spec["watchdog_s"], **make.args)
+        else:
+            with collector_paused(for_life=True):  # this process runs this one program until it ends: frozen
                 project = Project.model_validate_json(spec["project"])
                 build = build_project(project, variant=spec.get("variant", "monitor"))
                 if build.compiled is None or has_errors(build.diagnostics):
