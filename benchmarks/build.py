@@ -7,14 +7,18 @@ check of the declarations, then the networks), of the compile step split into th
 ``compile()`` of the generated pieces and the collection that ends the build's collector pause
 (ladderlab/collector.py), then of the first scan of a simulation that views no network (as the server's runner
 starts one), and the peak resident set (``ru_maxrss``) with what the model alone takes. ``--variant monitor`` builds
-what opening a simulation builds. Targets: at most 6 s of CPU and 600 MB peak. Prints one line per run and the
-median, with the load average. ``--backend DIR`` measures another checkout's backend with this script (before/after:
-``--backend /work/main/backend``).
+what opening a simulation builds. The build runs as a simulation's worker runs it (simulation/worker.py): one
+collector pause over the lowering, the compile and the simulation, ending in ``gc.freeze()``
+(``collector_paused(for_life=True)``); ``--builds-again`` measures a process that builds again instead (a check
+worker, the CLI; a checkout without ``for_life``), whose pauses end in collections. Targets: at most 6 s of CPU
+and 600 MB peak. Prints one line per run and the median, with the load average. ``--backend DIR`` measures
+another checkout's backend with this script (before/after: ``--backend /work/main/backend``).
 """
 
 from __future__ import annotations
 
 import argparse
+import contextlib
 import gc
 import json
 import os
@@ -42,10 +46,11 @@ def _peak_mb() -> float:
     return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
 
 
-def measure(networks: int, variant: str) -> dict[str, float]:
+def measure(networks: int, variant: str, for_life: bool) -> dict[str, float]:
     """One build in this process: CPU seconds per phase and peak MB."""
     os.environ["LADDERLAB_MAX_SOURCE_CHARACTERS"] = str(100 * networks)  # ~50 characters of declarations a network
     from benchmarks.diagrams import project
+    from ladderlab.collector import collector_paused
     from ladderlab.engine import compile as compiling
     from ladderlab.engine.simulation import Simulation
     from ladderlab.ir.lower_project import lower_project
@@ -71,14 +76,15 @@ def measure(networks: int, variant: str) -> dict[str, float]:
     model = project("ld", networks)
     model_mb = _peak_mb()
     started = time.process_time()
-    lowered = lower_project(model)
-    lowering = time.process_time() - started
-    assert lowered.program is not None, [d.format() for d in lowered.diagnostics[:5]]
-    lowering_collection = spent["collection"]
-    compiled = compiling.compile_program(lowered.program, variant)
-    built = time.process_time()
-    del lowered
-    sim = Simulation(compiled)
+    with collector_paused(for_life=True) if for_life else contextlib.nullcontext():
+        lowered = lower_project(model)
+        lowering = time.process_time() - started
+        assert lowered.program is not None, [d.format() for d in lowered.diagnostics[:5]]
+        lowering_collection = spent["collection"]
+        compiled = compiling.compile_program(lowered.program, variant)
+        built = time.process_time()
+        del lowered
+        sim = Simulation(compiled)
     sim.view({})
     sim.cycle(1)
     total = time.process_time() - started
@@ -101,16 +107,22 @@ def main() -> None:
     parser.add_argument("--networks", type=int, default=NETWORKS)
     parser.add_argument("--variant", default="fast", choices=("fast", "monitor"))
     parser.add_argument("--backend", help="the backend directory to measure (default this checkout's)")
+    parser.add_argument(
+        "--builds-again",
+        action="store_true",
+        help="build as a process that builds again does (a check worker, the CLI): collected, not frozen",
+    )
     parser.add_argument("--one", action="store_true", help="measure one build in this process (JSON)")
     args = parser.parse_args()
     if args.one:
-        print(json.dumps(measure(args.networks, args.variant)))
+        print(json.dumps(measure(args.networks, args.variant, for_life=not args.builds_again)))
         return
     runs = []
     environment = {**os.environ, "LADDERLAB_BENCH_BACKEND": str(pathlib.Path(args.backend or BACKEND).resolve())}
     for _ in range(args.runs):
         done = subprocess.run(
-            [sys.executable, __file__, "--one", "--networks", str(args.networks), "--variant", args.variant],
+            [sys.executable, __file__, "--one", "--networks", str(args.networks), "--variant", args.variant]
+            + ["--builds-again"] * args.builds_again,
             check=True,
             capture_output=True,
             text=True,
@@ -121,7 +133,8 @@ def main() -> None:
         print(_line(run))
     median = {key: statistics.median(run[key] for run in runs) for key in runs[0]}
     print(
-        f"{args.networks:,} LD networks ({args.variant}, {args.backend or BACKEND}), median of {len(runs)}: "
+        f"{args.networks:,} LD networks ({args.variant}, {'builds again' if args.builds_again else 'for life'}, "
+        f"{args.backend or BACKEND}), median of {len(runs)}: "
         f"{_line(median)} (targets 6 s, 600 MB); {load_average()}"
     )
 

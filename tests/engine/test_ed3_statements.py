@@ -139,7 +139,9 @@ def test_a_variable_named_like_an_enumeration_keeps_its_members_and_unknown_valu
     )
     assert scans(shadowed, 1, "x") == [[4]]
     found = errors(program("lv : Level;", "lv := Level.Hihg;", TYPES))
-    assert len(found) == 1 and "ST-UNKNOWN-VAR: 'Hihg' is not a value of Level - did you mean 'High'?" in found[0], found
+    assert len(found) == 1 and "ST-UNKNOWN-VAR: 'Hihg' is not a value of Level - did you mean 'High'?" in found[0], (
+        found
+    )
 
 
 @pytest.mark.parametrize(

@@ -9,10 +9,12 @@ from __future__ import annotations
 
 import dataclasses
 
+import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from ladderlab.st import ast
+from ladderlab.st import parser as st_parser
 from ladderlab.st.parser import _run, grammar_keywords, parse_declarations
 from ladderlab.st.quick_decls import quick_declarations
 
@@ -113,3 +115,33 @@ def test_anything_else_goes_to_the_parser_with_its_diagnostics():
 def test_trailing_comments_still_attach_to_quickly_read_declarations():
     result = parse_declarations("VAR\n  a : BOOL; (* the start button *)\nEND_VAR", nested_comments=True)
     assert result.ast[0].decls[0].comment == "the start button"
+
+
+_LONG = (
+    "VAR\n"
+    + "".join(f"  A{i}, B{i} : BOOL;\n  T{i} : TON;\n" for i in range(3000))
+    + "END_VAR\nVAR_INPUT RETAIN x : INT; END_VAR"
+)
+
+
+def test_quick_declarations_of_any_length_skip_the_nesting_walk(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Issue 27: they nest 3 levels (st/nesting.py's count: block, declaration, name or type) however long, so the
+    parser does not walk 200,000 of them (~0.3 s of a 50,000-network build)."""
+
+    def walked(root: object) -> None:
+        raise AssertionError("the nesting walk ran")
+
+    monkeypatch.setattr(st_parser, "too_deep", walked)
+    result = parse_declarations(_LONG)
+    assert result.ast is not None and not result.diagnostics
+
+
+def test_quick_declarations_are_still_refused_below_their_depth(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Exact, not assumed: with the expression limit set below their 3 levels they are refused as the parser's
+    would be (ST-TOO-DEEP), at 3 accepted."""
+    monkeypatch.setenv("LADDERLAB_MAX_EXPRESSION_DEPTH", "2")
+    refused = parse_declarations(_LONG)
+    assert refused.ast is None and [d.code for d in refused.diagnostics] == ["ST-TOO-DEEP"]
+    monkeypatch.setenv("LADDERLAB_MAX_EXPRESSION_DEPTH", "3")
+    accepted = parse_declarations(_LONG)
+    assert accepted.ast is not None and not accepted.diagnostics

@@ -61,6 +61,8 @@ from .tasks import DEFAULT_WATCHDOG_S, Schedule, Task, task_table
 #: Scan times are sampled: the wall clock is read around every SAMPLE_EVERY-th scan (the first included), so a
 #: scan of a small program does not pay two clock readings (docs/runtime.md, "The scan loop").
 SAMPLE_EVERY = 16
+#: The slot types that may hold a user FB instance, whose path ``_instance_paths`` records
+_HOLDERS = (t.FbInstance, t.Array, t.Struct)
 
 
 @dataclass
@@ -769,8 +771,8 @@ class Simulation:
         self._instances[path.upper()] = (obj, pou)
         layout = self._context.layouts[pou]
         for place in layout.places.values():
-            if place.slot.var_class == "VAR_IN_OUT":
-                continue
+            if place.slot.var_class == "VAR_IN_OUT" or not isinstance(place.slot.type, _HOLDERS):
+                continue  # (no path made for the elementary slots: a 50,000-network POU has 200,000)
             owner = obj if place.page == 0 else getattr(obj, f"ll_p{place.page}")
             self._add_values(f"{path}.{place.slot.name}", place.slot.type, getattr(owner, place.attr))
 

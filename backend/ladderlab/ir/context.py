@@ -17,7 +17,7 @@ from ..st.body import BodyChecker
 from ..st.rules import assignable_or_report
 from ..st.symbols import THIS, CheckResult, PouInfo, Symbol
 from .lower_types import LoweringError, TypeLowering, ir_default
-from .nodes import SELF, Member, Origin, Slot, Stmt, Var, VarClass
+from .nodes import SELF, Member, Origin, Slot, Stmt, Var, VarClass, upper_name
 from .types import FbInstance, IrType
 
 #: Hidden slot names start with two underscores, which an IEC identifier must not contain (LEX-13); they
@@ -265,20 +265,20 @@ class PouContext:
         return var
 
     def _var_for(self, symbol: Symbol) -> Var:
-        upper = symbol.name.upper()
-        if symbol.var_class == "VAR_EXTERNAL" and symbol.address and upper not in self.checked.globals:
+        name = upper_name(symbol.name)
+        if symbol.var_class == "VAR_EXTERNAL" and symbol.address and name not in self.checked.globals:
             return self.direct(symbol.address, self.types.type_of(symbol.type, symbol.type_spec))  # AT %X0.0
         if symbol.pou is None or symbol.var_class == "VAR_EXTERNAL":
-            target = self.checked.globals.get(upper, symbol)
-            return Var("global", upper, self.types.type_of(target.type, target.type_spec))
-        if upper in self.edges and self.info is not None and symbol.pou.upper() == self.name:
-            return self.edges[upper]
+            target = self.checked.globals.get(name, symbol)
+            return Var("global", name, self.types.type_of(target.type, target.type_spec))
+        if name in self.edges and self.info is not None and symbol.pou.upper() == self.name:
+            return self.edges[name]
         method = self.info.method if self.info is not None else None
-        if method is not None and method.owner.symbols.get(upper) is symbol:  # the instance's (inherited too), via THIS
+        if method is not None and method.owner.symbols.get(name) is symbol:  # the instance's (inherited too), via THIS
             this = self.var_for(self.info.symbols[THIS])
             owner = self.types_for(method.owner.name)
-            return Var("local", this.name, owner.type_of(symbol.type, symbol.type_spec), (Member(upper),))
-        return Var("local", upper, self.types.type_of(symbol.type, symbol.type_spec))
+            return Var("local", this.name, owner.type_of(symbol.type, symbol.type_spec), (Member(name),))
+        return Var("local", name, self.types.type_of(symbol.type, symbol.type_spec))
 
     def this_var(self) -> Var:
         """``THIS^``: in a METHOD its in-out ``THIS``; in a function block's body the instance running it

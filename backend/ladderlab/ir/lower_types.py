@@ -32,7 +32,7 @@ from ..st.printer import print_expression
 from ..st.rules import EnumValue, constant_value
 from ..st.symbols import CheckResult, PouInfo, Symbol, TypeDef
 from .byte_layout import byte_layout, same_target, view_specs
-from .nodes import ReferenceInit, Slot
+from .nodes import ReferenceInit, Slot, upper_name
 from .types import (
     Array,
     Elementary,
@@ -324,7 +324,7 @@ class TypeLowering:
         else:
             initial = self.initial(symbol.type, symbol.type_spec, symbol.init)
         return Slot(
-            symbol.name.upper(),
+            upper_name(symbol.name),
             symbol.var_class,
             self.type_of(symbol.type, symbol.type_spec),
             initial,

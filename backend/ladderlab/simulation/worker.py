@@ -28,6 +28,7 @@ import time
 from multiprocessing.connection import Connection
 from typing import Any
 
+from ..collector import collector_paused
 from ..model import Diagnostic, Project, has_errors
 from .build import build_project
 from .check import check_project
@@ -83,15 +84,16 @@ def run_simulation(connection: Connection, spec: dict[str, Any]) -> None:
     limit_memory(spec.get("memory_bytes"))
     try:
         make = spec.get("make")
-        if make is not None:  # another way in (remote.Maker): e.g. a failed test's last state
+        if make is not None:  # another way in (remote.Maker): e.g. a failed test's last state (it runs scans)
             sim = make.function(watchdog_s=spec["watchdog_s"], **make.args)
         else:
-            project = Project.model_validate_json(spec["project"])
-            build = build_project(project, variant=spec.get("variant", "monitor"))
-            if build.compiled is None or has_errors(build.diagnostics):
-                link.send({"type": "failed", "diagnostics": _dumped(build.diagnostics)})
-                return
-            sim = build.simulation(watchdog_s=spec["watchdog_s"])
+            with collector_paused(for_life=True):  # this process runs this one program until it ends: frozen
+                project = Project.model_validate_json(spec["project"])
+                build = build_project(project, variant=spec.get("variant", "monitor"))
+                if build.compiled is None or has_errors(build.diagnostics):
+                    link.send({"type": "failed", "diagnostics": _dumped(build.diagnostics)})
+                    return
+                sim = build.simulation(watchdog_s=spec["watchdog_s"])
     except (LookupError, ValueError) as refused:  # a Maker's reason, in the user's words
         link.send({"type": "failed", "message": str(refused)})
         return

@@ -29,6 +29,7 @@ from .fast_lalr import NotFast, fast_parse
 from .lark_cache import cached_lark
 from .nesting import too_deep
 from .pragmas import attach_pack_modes
+from .quick_decls import DEPTH as QUICK_DEPTH
 from .quick_decls import quick_declarations
 from .transformer import AstBuilder, StSyntaxError
 
@@ -193,8 +194,9 @@ def parse_declarations(
     """
     prepared = _prepare(text, nested_comments)
     quick = quick_declarations(prepared, grammar_keywords())
-    parsed = ParseResult(quick) if quick is not None else _run(prepared, "start_decls", file, pou=pou)
-    return _finish(parsed, text, file, pou)
+    if quick is not None:
+        return _finish(ParseResult(quick), text, file, pou, depth=QUICK_DEPTH)
+    return _finish(_run(prepared, "start_decls", file, pou=pou), text, file, pou)
 
 
 def parse_statements(
@@ -238,8 +240,13 @@ def _prepare(text: str, nested_comments: bool) -> str:
     return blank_nested_comments(text) if nested_comments else text
 
 
-def _finish(result: ParseResult, original: str, file: str | None = None, pou: str | None = None) -> ParseResult:
-    if result.ast is not None and _may_nest_too_deep(result, original):
+def _finish(
+    result: ParseResult, original: str, file: str | None = None, pou: str | None = None, depth: int | None = None
+) -> ParseResult:
+    """``depth``: how deeply the AST is known to nest (expression levels; no statements), when it is."""
+    if result.ast is not None and (
+        depth > limits.EXPRESSION_DEPTH.value if depth is not None else _may_nest_too_deep(result, original)
+    ):
         deep = too_deep(result.ast)
         if deep is not None:  # nothing after the parser may meet nesting beyond the limits (st/nesting.py)
             message, span = deep

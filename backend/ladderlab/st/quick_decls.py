@@ -27,6 +27,9 @@ _NAME = re.compile(_IDENT)
 _END = re.compile(rf"{_WS}$")
 _KINDS = {"VAR", "VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT", "VAR_GLOBAL", "VAR_EXTERNAL", "VAR_TEMP"}
 _QUALIFIERS = {"CONSTANT", "RETAIN", "NON_RETAIN", "PERSISTENT"}
+#: How deeply the AST of such a text nests, as st/nesting.py counts (a VarBlock, a VarDecl, its name or type),
+#: whatever its length: the parser's nesting walk need not visit it (~0.3 s for 200,000 declarations)
+DEPTH = 3
 
 
 def quick_declarations(text: str, keywords: frozenset[str]) -> list[ast.VarBlock] | None:

@@ -12,7 +12,7 @@ from .types import Type
 PARAMETER_CLASSES = ("VAR_INPUT", "VAR_IN_OUT", "VAR_OUTPUT")
 
 
-@dataclass(eq=False)
+@dataclass(eq=False, slots=True)
 class Symbol:
     """One declared variable (or directly represented variable when ``name`` is its address)."""
 

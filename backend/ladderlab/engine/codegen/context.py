@@ -14,7 +14,7 @@ from ..process_image import ProcessImage, image_view_name, key_of, located_addre
 from ..stdlib import STANDARD_FBS
 from . import names
 from .layout import Layout
-from .mentions import addresses_in_out
+from .mentions import Mentions, addresses_in_out, mentions
 from .runtime import UNSET
 from .typeinfo import runtime_name
 
@@ -120,14 +120,16 @@ class ModuleContext:
     structs: dict[t.Struct, str] = field(default_factory=dict)
     bound: dict[str, object] = field(default_factory=dict)
     origins: list[ir.Origin] = field(default_factory=list)
-    #: The statement of each statement origin (its variables are read back for a fault report).
-    origin_statements: dict[int, ir.Stmt] = field(default_factory=dict)
+    #: The statement of each origin, None for those of no statement (a statement's variables are read back for a
+    #: fault report; a list, not a dict by index: a 50,000-network program has 140,000)
+    origin_statements: list[ir.Stmt | None] = field(default_factory=list)
     pauses: list[PausePoint] = field(default_factory=list)
     probe_tables: dict[str, ProbeTable] = field(default_factory=dict)  # upper-case POU name -> its probes
     instances: list[ir.ProgramInstance] = field(default_factory=list)
     tasks: list[ir.TaskSpec] = field(default_factory=list)
     diagnostics: list[Diagnostic] = field(default_factory=list)
     _bound_keys: dict[object, str] = field(default_factory=dict)
+    _mentions: dict[str, Mentions] = field(default_factory=dict)
 
     def __post_init__(self) -> None:
         self.pous = {name.upper(): pou for name, pou in self.program.pous.items()}
@@ -143,7 +145,14 @@ class ModuleContext:
     def in_outs_addressed(self) -> bool:
         """Whether some POU takes REF()/ADR() of its own VAR_IN_OUT (mentions.addresses_in_out): only then does a
         call pass its own call's variables to an in-out with the call's frame (runtime.FramedPair)."""
-        return any(addresses_in_out(pou) for pou in self.pous.values())
+        return any(addresses_in_out(self.mentions(pou)) for pou in self.pous.values())
+
+    def mentions(self, pou: ir.Pou) -> Mentions:
+        """What the POU's body mentions (mentions.mentions), walked once per POU: several questions need it."""
+        found = self._mentions.get(pou.name.upper())
+        if found is None or found.pou is not pou:
+            found = self._mentions[pou.name.upper()] = mentions(pou)
+        return found
 
     @property
     def located(self) -> list[ir.Slot]:
@@ -199,10 +208,8 @@ class ModuleContext:
 
     def origin(self, origin: ir.Origin, statement: ir.Stmt | None = None) -> int:
         self.origins.append(origin)
-        index = len(self.origins) - 1
-        if statement is not None:
-            self.origin_statements[index] = statement
-        return index
+        self.origin_statements.append(statement)
+        return len(self.origins) - 1
 
     def pause(self, kind: str, origin: ir.Origin, element: str | None = None) -> int:
         point = PausePoint(len(self.pauses), kind, origin, element)

@@ -125,7 +125,7 @@ def make_fault(
     instance = None
     if frame is not None and origin is not None:
         reader = FrameReader(generated.context, frame, ns, origin.pou)
-        statement = generated.origin_statements.get(oid)  # type: ignore[arg-type]
+        statement = generated.origin_statements[oid] if oid is not None else None
         for var, pointer in _with_pointers(statement_vars(statement) if statement is not None else []):
             try:
                 value = reader.read(var)

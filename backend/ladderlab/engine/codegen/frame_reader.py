@@ -27,7 +27,7 @@ class FrameReader:
         self.context, self.locals, self.ns = context, frame.f_locals, ns
         self.pou = context.pous[pou.upper()]
         self.slots = {s.name.upper(): s for s in self.pou.slots}
-        self.boxed = boxed_locals(self.pou) if self.pou.kind == "function" else set()
+        self.boxed = boxed_locals(context.mentions(self.pou)) if self.pou.kind == "function" else set()
 
     def read(self, var: ir.Var) -> object:
         value, ty = self.root(var)

@@ -30,9 +30,9 @@ class Layout:
     def __init__(self, slots: list[ir.Slot], page_size: int = PAGE_SIZE) -> None:
         stored = [s for s in slots if s.var_class != "VAR_EXTERNAL" and s.address is None]
         #: located variables: no attribute, they live in the process image (engine/process_image.py)
-        self.located: dict[str, ir.Slot] = {s.name.upper(): s for s in slots if s.address is not None}
+        self.located: dict[str, ir.Slot] = {ir.upper_name(s.name): s for s in slots if s.address is not None}
         self.places: dict[str, Place] = {
-            s.name.upper(): Place(s, names.slot(s.name), i // page_size) for i, s in enumerate(stored)
+            ir.upper_name(s.name): Place(s, names.slot(s.name), i // page_size) for i, s in enumerate(stored)
         }
         self.pages = max(1, -(-len(stored) // page_size))
         self._places: list[list[Place]] = [[] for _ in range(self.pages)]

@@ -27,7 +27,7 @@ class Generated:
     lazy: dict[int, LazyPiece]  # piece index -> the function it defines, compiled at first use (compile.py)
     line_origins: list[int | None]
     origins: list[ir.Origin]
-    origin_statements: dict[int, ir.Stmt]
+    origin_statements: list[ir.Stmt | None]  # by origin index
     pauses: list[PausePoint]
     bound: dict[str, object]
     context: ModuleContext

@@ -28,21 +28,25 @@ from functools import lru_cache
 
 _PLAIN = re.compile(r"[A-Z0-9_]+\Z")
 _ALNUM = re.compile(r"[A-Z0-9]")
-# Names are asked for by the hundred thousand when a large program is compiled; a long-running server compiles
-# many programs, so the caches keep the most recent names only (a 10,000-network POU has some 40,000 slots).
+# Only escapes are cached: a plain name costs less to check than a cache lookup, and a cache over every name of a
+# large program misses on each (a 50,000-network POU has 200,000 slots) and pays for its evictions. A long-running
+# server compiles many programs, so the cache keeps the most recent escapes only.
 _NAMES_KEPT = 1 << 16
 
 
-@lru_cache(maxsize=_NAMES_KEPT)
 def escape(name: str) -> str:
     """``name`` upper-cased if it is a plain identifier, else the injective escape (starting with ``w``)."""
     upper = name.upper()
     if upper.isascii() and (upper.isidentifier() or _PLAIN.match(upper)):  # (an ASCII identifier is plain)
         return upper
-    return "w" + "".join(c if _ALNUM.match(c) and c.isascii() else f"_{ord(c):06X}" for c in upper)
+    return _escaped(upper)
 
 
 @lru_cache(maxsize=_NAMES_KEPT)
+def _escaped(upper: str) -> str:
+    return "w" + "".join(c if _ALNUM.match(c) and c.isascii() else f"_{ord(c):06X}" for c in upper)
+
+
 def slot(name: str) -> str:
     """Attribute / local name of a variable slot or structure field."""
     return "v_" + escape(name)

@@ -442,7 +442,7 @@ def _unpack_reference(slot: ir.Slot, src: Source) -> None:
 def emit_function(module: ModuleContext, pou: ir.Pou, decls: Source, code: Source) -> None:
     """The function into ``code`` (never chunked: its variables are locals); its probe lists into ``decls``."""
     scope = Scope(module, pou)
-    scope.boxed = boxed_locals(pou)
+    scope.boxed = boxed_locals(module.mentions(pou))
     scope.framed = framed_variables(module, pou)
     scope.result_slot()  # raises when missing
     inputs = [s for s in pou.slots if s.var_class == "VAR_INPUT"]

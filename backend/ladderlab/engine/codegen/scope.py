@@ -23,7 +23,7 @@ from ...ir import types as t
 from . import names
 from .context import CodegenError, ModuleContext, std_fb_class
 from .layout import Layout, Place
-from .mentions import addressed_locals, addressed_temps, passed_in_out, referenced_locals, walk
+from .mentions import addressed_locals, addressed_temps, passed_in_out, referenced_locals
 from .typeinfo import is_composite
 
 
@@ -42,7 +42,7 @@ class Scope:
         self.pou = pou
         self.function = pou.kind == "function"
         self.layout: Layout | None = None if self.function else module.layouts[pou.name.upper()]
-        self.slots = {s.name.upper(): s for s in pou.slots if s.var_class != "VAR_EXTERNAL"}
+        self.slots = {ir.upper_name(s.name): s for s in pou.slots if s.var_class != "VAR_EXTERNAL"}
         self.in_outs = [s for s in self.slots.values() if s.var_class == "VAR_IN_OUT"]
         self.boxed: set[str] = set()
         #: the variables whose references die with the call (framed_variables): its calls have a Frame
@@ -88,8 +88,8 @@ class Scope:
         code, ty, page = found
         if page:  # every chunk function loads the pages its own statements use
             self.pages_used.add(page)
-        if var.scope == "local" and self.temp_locals and var.name.upper() in self.temp_locals:
-            self.temps_used.add(var.name.upper())  # ... and the temporaries they use
+        elif code.startswith("ll_t_"):  # ... and the temporaries they use (only temp_locals' are named so)
+            self.temps_used.add(var.name.upper())
         return code, ty
 
     def _root(self, var: ir.Var) -> tuple[str, t.IrType, int]:
@@ -100,16 +100,16 @@ class Scope:
         if slot.address is not None:  # a located variable: its process image view (engine/process_image.py)
             view, key = self.module.image_view(slot, world=self.pou.live_clock)
             return f"{view}[{key}]", slot.type, 0
-        attr = names.slot(slot.name)
         if var.scope == "global":
             place = self.module.globals.get(var.name)
-            return f"{global_owner(place.page)}.{attr}", slot.type, 0  # type: ignore[union-attr]
+            return f"{global_owner(place.page)}.{place.attr}", slot.type, 0  # type: ignore[union-attr]
         if slot.var_class == "VAR_IN_OUT":
             if is_composite(slot.type):
-                return attr, slot.type, 0
+                return names.slot(slot.name), slot.type, 0
             key = names.escape(slot.name)
             return f"ll_c_{key}[ll_k_{key}]", slot.type, 0
         if self.function:
+            attr = names.slot(slot.name)
             return (f"{attr}[0]" if slot.name.upper() in self.boxed else attr), slot.type, 0
         local = self.temp_locals.get(slot.name.upper())
         if local is not None:
@@ -175,13 +175,14 @@ def framed_variables(module: ModuleContext, pou: ir.Pou) -> set[str]:
     ``runtime.Frame``: a FUNCTION's own variables, a PROGRAM's / FB's VAR_TEMP, that the body takes REF()/ADR() of,
     and, when some POU takes REF()/ADR() of its VAR_IN_OUT, those passed to an in-out (the reference the callee
     takes refers to them). Empty for the many POUs that do neither: their code has no frame."""
+    found = module.mentions(pou)
     if pou.kind == "function":
-        own, kept = addressed_locals(pou), None
+        own, kept = addressed_locals(found), None
     else:
-        own, kept = addressed_temps(pou), {s.name.upper() for s in pou.slots if s.var_class == "VAR_TEMP"}
+        own, kept = addressed_temps(found), {s.name.upper() for s in pou.slots if s.var_class == "VAR_TEMP"}
     if not module.in_outs_addressed:
         return own
-    passed = passed_in_out(pou, lambda fb, pin: _in_out_pin(module, fb, pin))
+    passed = passed_in_out(found, lambda fb, pin: _in_out_pin(module, fb, pin))
     return own | (passed if kept is None else passed & kept)
 
 
@@ -203,7 +204,8 @@ def temp_locals(module: ModuleContext, pou: ir.Pou) -> dict[str, str]:
         for s in pou.slots
         if s.hidden and s.var_class == "VAR_TEMP" and s.address is None and isinstance(s.type, t.Elementary)
     }
-    if not candidates or any(type(s) is ir.Jump for block in pou.blocks for s in walk(block.statements)):
+    found = module.mentions(pou)
+    if not candidates or found.jumps:
         return {}
-    referenced = referenced_locals(pou, by_value=lambda fb: std_fb_class(fb) is not None)
+    referenced = referenced_locals(found, by_value=lambda fb: std_fb_class(fb) is not None)
     return {name: local for name, local in candidates.items() if name not in referenced}
