@@ -231,13 +231,19 @@ def test_random_byte_writes_read_back_as_the_reference_layout_says(types, writes
     """Bytes written one by one through a POINTER TO BYTE into a STRUCT of random 1-, 2- and 4-byte members: the
     members, SIZEOF (TYP-45) and every byte read back are what Python's ``struct`` gives for the same bytes with
     the padding written out (``_reference_format``); a nonzero byte into padding is the fault instead."""
-    fmt = _reference_format(types)
+    assert_byte_writes_read_back(types, _reference_format(types), writes)
+
+
+def assert_byte_writes_read_back(types: list[str], fmt: str, writes: list[tuple[int, int]], pragma: str = "") -> None:
+    """Writes each (offset, byte) through a POINTER TO BYTE into a STRUCT X of ``types`` (declared after
+    ``pragma``), then reads SIZEOF and every byte back: they and the members must be what Python's ``struct``
+    gives for ``fmt`` (the reference layout, padding written out as ``x``); a nonzero byte into padding faults."""
     size = struct.calcsize(fmt)
     writes = [(offset % size, byte) for offset, byte in writes]
     members = "".join(f"m{i} : {name}; " for i, name in enumerate(types))
     body = "".join(f"pb := ADR(r);\npb := pb + {offset};\npb^ := {byte};\n" for offset, byte in writes)
     sim = simulation(
-        f"TYPE X : STRUCT {members}END_STRUCT; END_TYPE\n",
+        f"{pragma}TYPE X : STRUCT {members}END_STRUCT; END_TYPE\n",
         f"r : X; pb : POINTER TO BYTE; n : DINT; out : ARRAY [0..{size - 1}] OF BYTE; i : INT;",
         f"n := SIZEOF(r);\n{body}pb := ADR(r);\nFOR i := 0 TO {size - 1} DO\n  out[i] := pb^;\n  pb := pb + 1;\nEND_FOR;",
     )

@@ -18,7 +18,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from .test_references import build
-from .test_struct_memory_views import MEMCPY, simulation
+from .test_struct_memory_views import MEMCPY, assert_byte_writes_read_back, simulation
 
 PACKED = "{{attribute 'pack_mode' := '{mode}'}}\nTYPE P : STRUCT a : BYTE; b : DINT; c : BYTE; END_STRUCT; END_TYPE\n"
 
@@ -192,35 +192,5 @@ def test_random_byte_writes_into_a_packed_struct_read_back_as_the_reference_layo
     """Bytes written one by one through a POINTER TO BYTE into a packed STRUCT of random 1- to 8-byte members: the
     members, SIZEOF (TYP-45) and every byte read back are what Python's ``struct`` gives for the same bytes with
     the padding written out; a nonzero byte into padding is the fault instead."""
-    fmt = _packed_format(types, pack)
-    size = struct.calcsize(fmt)
-    writes = [(offset % size, byte) for offset, byte in writes]
-    members = "".join(f"m{i} : {name}; " for i, name in enumerate(types))
-    body = "".join(f"pb := ADR(r);\npb := pb + {offset};\npb^ := {byte};\n" for offset, byte in writes)
-    sim = simulation(
-        f"{{attribute 'pack_mode' := '{pack}'}}\nTYPE X : STRUCT {members}END_STRUCT; END_TYPE\n",
-        f"r : X; pb : POINTER TO BYTE; n : DINT; out : ARRAY [0..{size - 1}] OF BYTE; i : INT;",
-        f"n := SIZEOF(r);\n{body}pb := ADR(r);\nFOR i := 0 TO {size - 1} DO\n  out[i] := pb^;\n  pb := pb + 1;\nEND_FOR;",
-    )
-    padding = set(range(size)) - {i for start, length in _member_bytes(fmt) for i in range(start, start + length)}
-    sim.cycle(1)
-    if any(offset in padding and byte for offset, byte in writes):
-        assert sim.fault is not None and sim.fault.code == "index_out_of_range"
-        return
-    memory = bytearray(size)
-    for offset, byte in writes:
-        memory[offset] = byte
-    assert sim.fault is None and sim.read("Main.n") == size
-    assert sim.read("Main.out") == list(memory)
-    assert sim.read("Main.r") == {f"M{i}": v for i, v in enumerate(struct.unpack(fmt, memory))}
-
-
-def _member_bytes(fmt: str) -> list[tuple[int, int]]:
-    """(offset, size) of each member (not ``x``) of a ``struct`` format."""
-    found, offset = [], 0
-    for code in fmt[1:]:
-        size = struct.calcsize("<" + code)
-        if code != "x":
-            found.append((offset, size))
-        offset += size
-    return found
+    pragma = f"{{attribute 'pack_mode' := '{pack}'}}\n"
+    assert_byte_writes_read_back(types, _packed_format(types, pack), writes, pragma)
