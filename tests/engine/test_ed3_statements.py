@@ -148,7 +148,10 @@ def test_a_variable_named_like_an_enumeration_keeps_its_members_and_unknown_valu
     "types, message",
     [
         ("TYPE E : SINT (A := 200); END_TYPE", "ST-RANGE: 200 does not fit the enumeration's base type SINT"),
-        ("TYPE E : REAL (A := 1); END_TYPE", "an enumeration's base type must be an integer type, not REAL"),
+        (
+            "TYPE E : REAL (A := 1); END_TYPE",
+            "an enumeration's base type must be an integer or BYTE/WORD/DWORD/LWORD, not REAL",
+        ),
     ],
 )
 def test_enumeration_base_type_and_values_are_checked(types, message):

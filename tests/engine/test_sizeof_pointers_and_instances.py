@@ -68,3 +68,19 @@ def test_sizeof_of_an_instance_or_an_interface_is_a_located_error(declarations, 
     )
     errors = [(d.code, d.message, d.line) for d in result.diagnostics if d.severity == "error"]
     assert errors == [("IR-UNSUPPORTED", message, 8)]  # the line of `n := ...` in the text
+
+
+def test_sizeof_of_an_enumeration_is_its_base_types_width():
+    """TYP-45 with CODESYS's "Enumeration" page: an enumeration is stored as its base type, INT unless the declaration
+    names another; so SIZEOF is 2 for a plain one, 4 for one based on UDINT, 1 for one based on BYTE, and an array of
+    three plain ones is 6."""
+    result = build(
+        "TYPE Color : (Red, Green, Blue); END_TYPE\nTYPE Mode : UDINT (Off := 0, Run := 1); END_TYPE\n"
+        "TYPE Small : BYTE (A := 0, B); END_TYPE\nPROGRAM Main\nVAR\n  c : Color; m : Mode; s : Small;\n"
+        "  cs : ARRAY[1..3] OF Color; n : ARRAY[0..3] OF DINT;\nEND_VAR\n"
+        "n[0] := SIZEOF(c);\nn[1] := SIZEOF(Mode);\nn[2] := SIZEOF(s);\nn[3] := SIZEOF(cs);\nEND_PROGRAM\n"
+    )
+    assert [d.format() for d in result.diagnostics if d.severity == "error"] == []
+    sim = result.simulation()
+    sim.cycle(1)
+    assert sim.read("Main.n") == [2, 4, 1, 6]

@@ -24,6 +24,7 @@ from typing import Any
 
 from .. import limits
 from ..iec.addresses import incomplete
+from ..iec.elementary import ELEMENTARY
 from ..iec.values import default_value, f32, store_fn
 from ..st import ast
 from ..st import types as t
@@ -126,7 +127,7 @@ class TypeLowering:
                 )
             return array
         if isinstance(ty, t.EnumType):
-            return Enum(ty.name.upper(), tuple((name, value) for name, (_, value) in ty.values.items()))
+            return Enum(ty.name.upper(), tuple((name, value) for name, (_, value) in ty.values.items()), ty.base)
         if isinstance(ty, t.StructType):
             return self._struct(ty, spec)
         if isinstance(ty, t.FbType):
@@ -404,9 +405,10 @@ def ir_default(type: IrType) -> object:
 
 
 def byte_size(type: IrType) -> int:
-    """SIZEOF (TYP-45) as CODESYS counts: the type's width, BOOL 1, STRING[n] n + 1, enumerations 4 (stored as
-    DINT), a pointer 4 (an address of the 32-bit x86/ARM target LadderLab computes as, docs/st.md), arrays the sum
-    of their elements, a STRUCT its byte layout's size (padding included: ir/byte_layout.py)."""
+    """SIZEOF (TYP-45) as CODESYS counts: the type's width, BOOL 1, STRING[n] n + 1, an enumeration its base
+    type's (INT unless it names another: CODESYS's "Enumeration" page), a pointer 4 (an address of the 32-bit
+    x86/ARM target LadderLab computes as, docs/st.md), arrays the sum of their elements, a STRUCT its byte
+    layout's size (padding included: ir/byte_layout.py)."""
     if isinstance(type, Subrange):
         return byte_size(type.base)
     if isinstance(type, Elementary):
@@ -414,7 +416,7 @@ def byte_size(type: IrType) -> int:
             return type.max_length + 1
         return max(1, type.info.bits // 8)
     if isinstance(type, Enum):
-        return 4
+        return ELEMENTARY[type.base].bits // 8
     if isinstance(type, Array):
         return _size(type) * byte_size(type.element)
     if isinstance(type, Struct):

@@ -39,10 +39,12 @@ class Subrange:
 
 @dataclass(frozen=True)
 class Enum:
-    """Enumeration values are ints; ``values`` maps each name to its int, in declaration order."""
+    """Enumeration values are ints; ``values`` maps each name to its int, in declaration order; ``base`` is the
+    integer type CODESYS stores it as (its SIZEOF)."""
 
     name: str
     values: tuple[tuple[str, int], ...]
+    base: str = "INT"
 
 
 @dataclass(frozen=True)

@@ -312,11 +312,14 @@ class ProjectChecker:
     def _enum(self, spec: ast.EnumType, checker: BodyChecker, name: str) -> Type:
         enum = t.EnumType(name)
         base = t.elementary(spec.base) if spec.base else None
-        if spec.base and not (base is not None and t.in_family(base, "ANY_INT")):
-            checker.report(
-                "ST-TYPE-MISMATCH", f"an enumeration's base type must be an integer type, not {spec.base}", spec
-            )
+        # IEC ed. 3 allows the integers; CODESYS also BYTE, WORD, DWORD and LWORD (its "Enumeration" page)
+        integer = base is not None and (t.in_family(base, "ANY_INT") or base.category == "bits")
+        if spec.base and not integer:
+            message = f"an enumeration's base type must be an integer or BYTE/WORD/DWORD/LWORD, not {spec.base}"
+            checker.report("ST-TYPE-MISMATCH", message, spec)
             base = None
+        if base is not None:
+            enum.base = base.name
         following = 0
         for value in spec.values:
             if value.value is not None:

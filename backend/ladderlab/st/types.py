@@ -85,6 +85,7 @@ class StructType(Type):
 class EnumType(Type):
     name: str
     values: dict[str, tuple[str, int]] = field(default_factory=dict)  # upper name -> (name as written, value)
+    base: str = "INT"  # the integer type it is stored as (IEC ed. 3, CODESYS: INT unless the declaration names one)
 
 
 @dataclass(eq=False)
