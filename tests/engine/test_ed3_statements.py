@@ -130,6 +130,22 @@ def test_codesys_qualified_enumeration_values_are_the_typed_literals(variant):
     assert scans(text, 1, "lv", "top", "m", "code", "on", variant=variant) == [[-10, 10, 2, 3, True]]
 
 
+def test_codesys_writes_the_base_type_after_the_values_and_the_printer_keeps_it():
+    """CODESYS's "Enumeration" page: `(white := 16#FFFFFF00, ..., black := 16#88000000) DWORD := black` is a DWORD
+    enumeration whose variables start as black; `(A, B, C) BYTE` counts from 0 in one byte. The ST text printed
+    from the tree parses back to the same tree (the form without a first value stays CODESYS's)."""
+    types = (
+        "TYPE Color : (white := 16#FFFFFF00, yellow := 16#FFFF0000, black := 16#88000000) DWORD := black; END_TYPE\n"
+        "TYPE Small : (A, B, C) BYTE; END_TYPE"
+    )
+    text = program("c : Color; s : Small := Small.C; n : DINT; m : DINT;", "n := SIZEOF(c); m := SIZEOF(s);", types)
+    assert scans(text, 1, "c", "s", "n", "m") == [[0x88000000, 2, 4, 1]]
+    parsed = parse_source(types)
+    printed = print_source(parsed.ast)
+    assert "(A, B, C) BYTE" in printed and "DWORD (white := 16#FFFFFF00" in printed, printed
+    assert parse_source(printed).ast == parsed.ast
+
+
 def test_a_variable_named_like_an_enumeration_keeps_its_members_and_unknown_values_are_named():
     """A declared variable wins over the type of the same name (its member is read); Level.Hihg is no value."""
     shadowed = program(

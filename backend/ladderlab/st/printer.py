@@ -209,11 +209,10 @@ def print_type(spec: ast.TypeSpec, level: int = 0) -> str:
     if isinstance(spec, ast.PointerType):
         return f"{spec.kind} {print_type(spec.target, level)}"
     if isinstance(spec, ast.EnumType):
-        return (
-            (f"{spec.base} (" if spec.base else "(")
-            + ", ".join(v.name + (f" := {_expr(v.value, 0)}" if v.value is not None else "") for v in spec.values)
-            + ")"
-        )
+        values = ", ".join(v.name + (f" := {_expr(v.value, 0)}" if v.value is not None else "") for v in spec.values)
+        if spec.base and spec.values and spec.values[0].value is None:  # IEC's `INT (A := 0, B)` needs the first :=
+            return f"({values}) {spec.base}"  # CODESYS's form
+        return f"{spec.base} ({values})" if spec.base else f"({values})"
     if isinstance(spec, ast.StructType):
         members = "".join(_var_decl(m, level + 1) for m in spec.members)
         return f"STRUCT\n{members}{INDENT * level}END_STRUCT"

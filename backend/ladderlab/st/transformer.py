@@ -309,6 +309,9 @@ class AstBuilder(Transformer):
     def based_enum_type(self, c):
         return ast.EnumType(c[1:-1], span_of(c), str(c[0]))
 
+    def codesys_based_enum_type(self, c):
+        return ast.EnumType(c[:-2], span_of(c), str(c[-1]))
+
     def enum_value(self, c):
         return ast.EnumValue(str(c[0]), c[1], span_of(c))
 
