@@ -190,3 +190,35 @@ def test_an_ld_box_of_a_programs_method_shows_every_pin_online(page, server):
         cycles(page, 1)
         expect(drawn.locator('[data-pin-value="out:OUT"] .ld-badge')).to_have_attribute("data-value", str(total))
         expect(drawn.locator('[data-pin-value="out:TWICE"] .ld-badge')).to_have_attribute("data-value", str(2 * total))
+
+
+def test_an_ld_box_of_an_instances_method_draws_its_pins_and_runs(page, server):
+    """Issue 25: an LD box ``d.DivMod`` (a METHOD of the FB instance d) draws the method's pins (a, b, q, r and its
+    result OUT), as the FBD block does, and shows their values online. By hand: n = 10, b = 4 gives q = 10 / 4 = 2,
+    r = 10 MOD 4 = 2 and the result r = 0, FALSE; the method counts its calls in d.calls: 1, 2, 3."""
+    box = {
+        "type": "box",
+        "id": "b1",
+        "call": "d.DivMod",
+        "en": True,
+        "inputs": {"a": "n", "b": "4"},
+        "outputs": {"q": "quot", "r": "rest"},
+    }
+    main = {
+        "name": "Main",
+        "kind": "program",
+        "language": "ld",
+        "declarations": "VAR d : Divider; n : INT := 10; quot : INT; rest : INT; END_VAR",
+        "body": {"networks": [{"id": "n1", "elements": [{"type": "contact", "id": "c", "var": "TRUE"}, box]}]},
+    }
+    store_project(server, {"name": "ldmethod", "pous": [DIVIDER, main]})
+    page.goto(server)
+    open_pou(page, "ldmethod", "Main")
+    drawn = page.locator('g.ld-element[data-id="b1"]')
+    for pin in ("a", "b", "q", "r", "OUT"):  # the method's pins, from its FB's library entry
+        expect(drawn.get_by_text(pin, exact=True)).to_have_count(1)
+    go_online(page, run=False)
+    cycles(page, 1)
+    expect(drawn.locator('[data-pin-value="out:Q"] .ld-badge')).to_have_attribute("data-value", "2")
+    expect(drawn.locator('[data-pin-value="out:R"] .ld-badge')).to_have_attribute("data-value", "2")
+    expect(drawn.locator('[data-pin-value="out:OUT"] .ld-badge')).to_have_attribute("data-value", "FALSE")

@@ -4,6 +4,9 @@
 import type { LibraryEntry, SymbolInfo } from "../generated/api";
 import type { Block, FbdBody, FbdNetwork, PinRef, Wire } from "../generated/api";
 import { RESULT_PIN } from "../ld/pins";
+import { blockEntry, symbolType, type Lookup } from "../store/calls";
+
+export { blockEntry, instanceMethodEntries, methodEntry, symbolType, type Lookup } from "../store/calls";
 
 export type {
   Block,
@@ -57,8 +60,6 @@ export interface NodePins {
   outputs: PinDef[];
 }
 
-export type Lookup = (call: string) => LibraryEntry | undefined;
-
 const EXTENSION = /^([A-Z_]+?)(\d+)$/;
 
 /**
@@ -90,12 +91,6 @@ export function nextInput(block: Block, entry: LibraryEntry | undefined, wires: 
   return match ? `${match[1]}${Number(match[2]) + 1}` : null;
 }
 
-/** The type a symbol declares for the root of an operand (`Motor`, not `T1.Q`); undefined otherwise. */
-export function symbolType(text: string, symbols: readonly SymbolInfo[]): string | undefined {
-  const name = text.trim().toUpperCase();
-  return symbols.find((s) => s.name.toUpperCase() === name)?.type.toUpperCase();
-}
-
 /** The type of an input node's operand: a declared variable or a literal's family. */
 export function operandType(text: string, symbols: readonly SymbolInfo[]): string | undefined {
   const t = text.trim().toUpperCase();
@@ -111,37 +106,6 @@ export function operandType(text: string, symbols: readonly SymbolInfo[]): strin
   if (/^[+-]?\d[\d_]*\.\d[\d_]*(E[+-]?\d+)?$/.test(t)) return "ANY_REAL";
   if (/^'.*'$/.test(t)) return "STRING";
   return symbolType(t, symbols);
-}
-
-/**
- * The method a block `inst.M` calls (CODESYS): `M` among the methods of the function block `inst` is declared
- * as (the library lists a user FB's PUBLIC methods); undefined when `call` names none.
- */
-export function methodEntry(call: string, lookup: Lookup, symbols: readonly SymbolInfo[]): LibraryEntry | undefined {
-  const dot = call.lastIndexOf(".");
-  if (dot < 0) return undefined;
-  const fb = symbolType(call.slice(0, dot), symbols);
-  const method = call
-    .slice(dot + 1)
-    .trim()
-    .toUpperCase();
-  return (fb ? lookup(fb) : undefined)?.methods?.find((m) => m.name.toUpperCase() === method);
-}
-
-/**
- * What the block picker offers beside the library: `inst.M` for each PUBLIC method of every instance in `symbols` of
- * a function block that has methods (CODESYS), as a function entry named by the instance.
- */
-export function instanceMethodEntries(symbols: readonly SymbolInfo[], lookup: Lookup): LibraryEntry[] {
-  return symbols.flatMap((s) => {
-    const fb = lookup(s.type);
-    return fb?.kind === "function_block" ? (fb.methods ?? []).map((m) => ({ ...m, name: `${s.name}.${m.name}` })) : [];
-  });
-}
-
-/** What a block calls: a function or function block of the library, else a method (`inst.M`). */
-export function blockEntry(call: string, lookup: Lookup, symbols: readonly SymbolInfo[]): LibraryEntry | undefined {
-  return lookup(call) ?? methodEntry(call, lookup, symbols);
 }
 
 /** The pins of `node`, in drawing order (EN first and ENO first when a block has them). */

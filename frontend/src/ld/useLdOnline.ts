@@ -12,6 +12,7 @@ import {
 } from "../online/editorOnline";
 import type { LdOnlineActions } from "../online/operandCommands";
 import { partMonitor } from "../online/parts";
+import { blockEntry } from "../store/calls";
 import { useOnline } from "../online/store";
 import type { LdBody } from "./model";
 import { bindLd, ldOnlineView } from "./online";
@@ -43,7 +44,11 @@ export function useLdOnline(
   const instance = useShownInstance(pou);
   const key = part ? `ld:${pou.name}/${part}` : `ld:${pou.name}`;
   const live = phase !== "offline";
-  const lookup = useLibraryLookup(library);
+  const libraryEntry = useLibraryLookup(library);
+  const lookup = useCallback(
+    (call: string) => blockEntry(call, libraryEntry, symbols ?? []), // `inst.M` binds its method's pins
+    [libraryEntry, symbols],
+  );
 
   const binding = useMemo(
     () => (instance && symbols ? bindLd(body, instance, symbols, lookup, visible ?? undefined) : null),

@@ -262,6 +262,29 @@ describe("box picker", () => {
     });
   });
 
+  it("offers an FB instance's method as inst.M and draws the method's pins on its box (issue 25)", () => {
+    const step = entry("Step", "function", [["k", "INT"]], [["done", "BOOL"]], { source: "user", return_type: "INT" });
+    const counter = entry("Counter", "function_block", [], [], { source: "user", methods: [step] });
+    const t = setup(bodyOf(net("n1", c("a"), q("m"))), {
+      library: [...LIBRARY, counter],
+      symbols: [...SYMBOLS, sym("c1", "Counter")],
+    });
+    fireEvent.mouseDown(t.hit("a"));
+    t.key("b");
+    const dialog = screen.getByRole("dialog", { name: "Insert box" });
+    fireEvent.change(within(dialog).getByRole("textbox"), { target: { value: "c1." } });
+    const [option] = within(dialog).getAllByRole("option");
+    expect(
+      ["name", "signature", "kind"].map((part) => option!.querySelector(`.ld-entry-${part}`)?.textContent),
+    ).toEqual(["c1.Step", "(k) : INT", "METHOD · user"]);
+    fireEvent.keyDown(within(dialog).getByRole("textbox"), { key: "Enter" });
+    const box = networksOf(t.current())[0]!.elements![1]!;
+    expect(box).toMatchObject({ type: "box", call: "c1.Step", instance: null });
+    const drawn = t.container.querySelector(`[data-id="${box.id}"]`)!.textContent;
+    expect(drawn).toContain("k");
+    expect(drawn).toContain("done");
+  });
+
   it("turns EN/ENO on for a block without BOOL inputs (GR-27)", () => {
     const t = setup(bodyOf(net("n1", c("a"))));
     fireEvent.mouseDown(t.hit("a"));

@@ -15,6 +15,7 @@ import {
 } from "react";
 import type { Diagnostic, LibraryEntry, SymbolInfo } from "../../generated/api";
 import { parseClip, serializeClip } from "../clipboard";
+import { blockEntry, instanceMethodEntries } from "../../store/calls";
 import { canRedo, canUndo, record, redo, undo, type History } from "../../store/history";
 import { layoutBody } from "../layout";
 import { locate, networksOf, walk, type LdBody, type Place } from "../model";
@@ -167,7 +168,15 @@ export function LdEditor({
   const setValuePrompt = (request: ValueRequest | null) => dispatch({ type: "valuePrompt", request });
 
   const byName = useMemo(() => new Map(library.map((e) => [e.name.toUpperCase(), e])), [library]);
-  const lookup = useCallback((call: string) => byName.get(call.toUpperCase()), [byName]);
+  // A box calls a library entry, else an instance's method (`inst.M`): its pins are the method's.
+  const lookup = useCallback(
+    (call: string) => blockEntry(call, (name) => byName.get(name.toUpperCase()), symbols),
+    [byName, symbols],
+  );
+  const pickable = useMemo(
+    () => [...library, ...instanceMethodEntries(symbols, (name) => byName.get(name.toUpperCase()))],
+    [library, symbols, byName],
+  );
   const values = online !== undefined;
   const layout = useMemo(() => layoutBody(body, { library: lookup, values }), [body, lookup, values]);
   const known = useMemo(() => symbolNames(symbols), [symbols]);
@@ -662,7 +671,7 @@ export function LdEditor({
       ) : null}
       {picker ? (
         <BoxPicker
-          library={library}
+          library={pickable}
           onPick={pickBox}
           onCancel={() => {
             setPicker(false);
