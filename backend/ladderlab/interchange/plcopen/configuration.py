@@ -25,7 +25,7 @@ from ...model.diagnostics import Diagnostic
 from ...model.project import Configuration, ProgramInstance, Project, Resource, Task
 from ...st import ast
 from ...st.parser import parse_declarations
-from .xml_io import Reader, info, info_text, ladderlab_data, sub
+from .xml_io import Reader, data_entries, info, info_text, ladderlab_data, sub
 
 CONFIGURATION = "config"
 RESOURCE = "resource"
@@ -170,8 +170,7 @@ def global_lists(reader: Reader, holder: ET.Element) -> list[ET.Element]:
     for node in reader.children(holder, "globalVars"):
         split = [
             block
-            for data in reader.children(reader.child(node, "addData"), "data")
-            if data.get("name") == MIXED_DATA
+            for data in data_entries(node, reader, MIXED_DATA)
             for mixed in reader.children(data, "MixedAttrsVarList")
             for block in reader.children(mixed, "globalVars")
         ]

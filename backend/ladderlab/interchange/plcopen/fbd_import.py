@@ -42,7 +42,7 @@ from ...model.fbd import (
 from .body import IdMaker, NetworkGroup
 from .graph import Conn, Element, Graph, reaches
 from .ld_import import negate
-from .xml_io import Reader, local, text_content
+from .xml_io import Reader, data_entries, local, text_content
 
 EXECUTABLE = ("block", "outVariable", "inOutVariable", "jump", "return", "label")
 _PREFIX = {
@@ -336,10 +336,9 @@ class FbdImporter:
         return PinRef(node=self.feedback_inputs[element.local_id].id, pin=SIMPLE_OUT)
 
     def negated_by_vendor(self, element: Element) -> bool:
-        for data in self.reader.children(self.reader.child(element.node, "addData"), "data"):
-            if data.get("name") == _BACHMANN:
-                flag = next((c for c in data if local(c) == "negated"), None)
-                return flag is not None and flag.get("value") == "true"
+        for data in data_entries(element.node, self.reader, _BACHMANN):
+            flag = next((c for c in data if local(c) == "negated"), None)
+            return flag is not None and flag.get("value") == "true"
         return False
 
     def not_block(self, element: Element, target: FbdNode) -> FbdNode:

@@ -69,6 +69,7 @@ from .xml_io import (
     Reader,
     body_language,
     canonical,
+    data_entries,
     foreign_data,
     info,
     info_text,
@@ -220,8 +221,7 @@ class _Importer:
             element
             for configuration in configurations
             for resource in r.children(configuration, "resource")
-            for data in r.children(r.child(resource, "addData"), "data")
-            if data.get("name") == data_name
+            for data in data_entries(resource, r, data_name)
             for element in r.children(data, tag)
         ]
 

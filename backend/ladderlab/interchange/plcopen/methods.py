@@ -30,7 +30,7 @@ from ...st.parser import parse_declarations, parse_source
 from ...st.printer import print_declarations, print_type
 from ...storage.st_text import method_header
 from .vars import parse_type_text, write_documentation, write_type, write_var_list
-from .xml_io import Reader, body_language, formatted_text, info_text, local, sub, text_content
+from .xml_io import Reader, body_language, data_entries, formatted_text, info_text, local, sub, text_content
 
 METHOD_DATA = "http://www.3s-software.com/plcopenxml/method"
 INHERITANCE_DATA = "http://www.3s-software.com/plcopenxml/pouinheritance"
@@ -101,8 +101,7 @@ def _entries(node: ET.Element | None, reader: Reader, data_name: str, tag: str) 
     """The ``<tag>`` elements of the ``data_name`` entries in ``node``'s addData (CODESYS: one per entry)."""
     return [
         element
-        for data in reader.children(reader.child(node, "addData"), "data")
-        if data.get("name") == data_name
+        for data in data_entries(node, reader, data_name)
         for element in data
         if isinstance(element.tag, str) and local(element) == tag
     ]
@@ -332,9 +331,7 @@ def read_methods(
     if carried:
         return [Method.model_validate(item) for item in json.loads(carried)]
     methods = []
-    for data in reader.children(reader.child(node, "addData"), "data"):
-        if data.get("name") != METHOD_DATA:
-            continue
+    for data in data_entries(node, reader, METHOD_DATA):
         for element in (c for c in data if isinstance(c.tag, str) and local(c) == "Method"):
             pou, name = node.get("name", ""), element.get("name", "")
             body = _st_body(element, reader, f"the method {pou}.{name}")

@@ -16,7 +16,7 @@ from ...iec.elementary import canonical_type_name, elementary
 from ...st import ast
 from ...st.parser import parse_expression, parse_type
 from ...st.printer import print_expression, print_type
-from .xml_io import Reader, formatted_text, info, ladderlab_data, local, sub, text_content
+from .xml_io import Reader, data_entries, formatted_text, info, ladderlab_data, local, sub, text_content
 
 #: Elementary types the XSD names directly (TIME_OF_DAY and DATE_AND_TIME are spelled TOD and DT there).
 XSD_ELEMENTARY = (
@@ -310,8 +310,7 @@ class VarReader:
         r = self.reader
         attributes = [
             attribute
-            for data in r.children(r.child(element, "addData"), "data")
-            if data.get("name") == ATTRIBUTES_DATA
+            for data in data_entries(element, r, ATTRIBUTES_DATA)
             for holder in r.children(data, "Attributes")
             for attribute in r.children(holder, "Attribute")
         ]

@@ -201,11 +201,16 @@ class Reader:
 CFC_DATA = "http://www.3s-software.com/plcopenxml/cfc"
 
 
+def data_entries(element: ET.Element | None, reader: Reader, name: str) -> list[ET.Element]:
+    """The ``<data name="name">`` entries of ``element``'s addData (vendors' extensions, LadderLab's own)."""
+    return [d for d in reader.children(reader.child(element, "addData"), "data") if d.get("name") == name]
+
+
 def body_language(body: ET.Element | None, reader: Reader) -> tuple[str, ET.Element | None]:
     """The language of a ``<body>`` (``ST`` when it is empty) and its element. CODESYS writes a CFC chart as an
     empty ``<ST>`` with the chart in the body's addData (``.../plcopenxml/cfc``): that is ``CFC``."""
     language = next(reader.elements(body), None)
-    charts = [d for d in reader.children(reader.child(body, "addData"), "data") if d.get("name") == CFC_DATA]
+    charts = data_entries(body, reader, CFC_DATA)
     if charts:
         return "CFC", charts[0]
     return (local(language) if language is not None else "ST"), language
@@ -226,9 +231,8 @@ def text_content(element: ET.Element | None) -> str:
 
 def info(element: ET.Element | None, reader: Reader) -> ET.Element | None:
     """LadderLab's ``<ll:info>`` in ``element``'s addData, or None."""
-    for data in reader.children(reader.child(element, "addData"), "data"):
-        if data.get("name") == LADDERLAB_DATA:
-            return next((c for c in data if local(c) == "info" and namespace(c) == LADDERLAB_NS), None)
+    for data in data_entries(element, reader, LADDERLAB_DATA):
+        return next((c for c in data if local(c) == "info" and namespace(c) == LADDERLAB_NS), None)
     return None
 
 
