@@ -41,3 +41,8 @@ export function instanceMethodEntries(symbols: readonly SymbolInfo[], lookup: Lo
 export function blockEntry(call: string, lookup: Lookup, symbols: readonly SymbolInfo[]): LibraryEntry | undefined {
   return lookup(call) ?? methodEntry(call, lookup, symbols);
 }
+
+/** What a box or block picker offers: the library, then `inst.M` for the instances' methods. */
+export function pickableCalls(library: readonly LibraryEntry[], symbols: readonly SymbolInfo[], lookup: Lookup) {
+  return [...library, ...instanceMethodEntries(symbols, lookup)];
+}

@@ -24,15 +24,16 @@ import { OperandEditor } from "../../ui/OperandEditor";
 import type { LastClip } from "../../ui/systemClipboard";
 import { useEditorRoot, type KeyHandlers } from "../../ui/useEditorRoot";
 import { OperandValuePrompt, type ValueRequest } from "../../online/ValuePrompt";
+import { useLibraryLookup } from "../../online/editorOnline";
 import { onlineOperandItems } from "../../online/operandCommands";
 import { referencesItem } from "../../xref/store";
+import { pickableCalls } from "../../store/calls";
 import { canRedo, canUndo, record, redo, undo, type History } from "../../store/history";
 
 import { parseClip, pasteClip, serializeClip } from "../clipboard";
 import { refusal } from "../compat";
 import {
   findNode,
-  instanceMethodEntries,
   kindOf,
   networksOf,
   nextInput,
@@ -188,10 +189,9 @@ export function FbdEditor({
   const setOffer = (next: VariableDeclaration | null) => dispatch({ type: "offer", offer: next });
   const setValuePrompt = (request: ValueRequest | null) => dispatch({ type: "valuePrompt", request });
 
-  const byName = useMemo(() => new Map(library.map((e) => [e.name.toUpperCase(), e])), [library]);
-  const lookup = useCallback((call: string) => byName.get(call.toUpperCase()), [byName]);
+  const lookup = useLibraryLookup(library);
   const known = useMemo(() => symbolNames(symbols), [symbols]);
-  const pickable = useMemo(() => [...library, ...instanceMethodEntries(symbols, lookup)], [library, symbols, lookup]);
+  const pickable = useMemo(() => pickableCalls(library, symbols, lookup), [library, symbols, lookup]);
   const onNear = useCallback(
     (network: string, isNear: boolean) => dispatch({ type: "near", network, near: isNear }),
     [],

@@ -15,7 +15,7 @@ import {
 } from "react";
 import type { Diagnostic, LibraryEntry, SymbolInfo } from "../../generated/api";
 import { parseClip, serializeClip } from "../clipboard";
-import { blockEntry, instanceMethodEntries } from "../../store/calls";
+import { blockEntry, pickableCalls } from "../../store/calls";
 import { canRedo, canUndo, record, redo, undo, type History } from "../../store/history";
 import { layoutBody } from "../layout";
 import { locate, networksOf, walk, type LdBody, type Place } from "../model";
@@ -58,6 +58,7 @@ import {
   variableOf,
   type Editing,
 } from "./editorState";
+import { useLibraryLookup } from "../../online/editorOnline";
 import { onlineOperandItems, type LdOnlineActions } from "../../online/operandCommands";
 import { referencesItem } from "../../xref/store";
 import { keysOf } from "../../keys/keymap";
@@ -167,16 +168,10 @@ export function LdEditor({
   const setZoom = (step: ZoomStep) => dispatch({ type: "zoom", step });
   const setValuePrompt = (request: ValueRequest | null) => dispatch({ type: "valuePrompt", request });
 
-  const byName = useMemo(() => new Map(library.map((e) => [e.name.toUpperCase(), e])), [library]);
+  const libraryEntry = useLibraryLookup(library);
   // A box calls a library entry, else an instance's method (`inst.M`): its pins are the method's.
-  const lookup = useCallback(
-    (call: string) => blockEntry(call, (name) => byName.get(name.toUpperCase()), symbols),
-    [byName, symbols],
-  );
-  const pickable = useMemo(
-    () => [...library, ...instanceMethodEntries(symbols, (name) => byName.get(name.toUpperCase()))],
-    [library, symbols, byName],
-  );
+  const lookup = useCallback((call: string) => blockEntry(call, libraryEntry, symbols), [libraryEntry, symbols]);
+  const pickable = useMemo(() => pickableCalls(library, symbols, libraryEntry), [library, symbols, libraryEntry]);
   const values = online !== undefined;
   const layout = useMemo(() => layoutBody(body, { library: lookup, values }), [body, lookup, values]);
   const known = useMemo(() => symbolNames(symbols), [symbols]);
