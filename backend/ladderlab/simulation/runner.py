@@ -1004,13 +1004,13 @@ class SimRunner:
         for instance, ids in elements:
             try:
                 self.sim.probes(instance, ())
-                known = self._known_elements(instance, ids or [])
+                known, unknown = self._elements(instance, ids or [])
             except (KeyError, CommandError) as error:
                 refused.append(error.message if isinstance(error, CommandError) else str(error.args[0]))
                 accepted.append(None)
                 continue
-            if ids is not None and len(known) < len(ids):
-                refused.append(self._unknown_elements(instance, [i for i in ids if i not in known]))
+            if unknown is not None:
+                refused.append(unknown)
             accepted.append((instance.strip().upper(), tuple(known) if ids is not None else None))
         self._watches[key] = _Watch(locations, tuple(a for a in accepted if a is not None))
         self._rebuild_union()
@@ -1020,16 +1020,17 @@ class SimRunner:
             "refused": refused,
         }
 
-    def _known_elements(self, instance: str, ids: list[str]) -> list[str]:
-        """The ids that are probed elements (or pins, ``box.Q``) of the instance's POU."""
-        known = set(self._ctx.probes_of(self._pou_of(instance)).elements)
-        return [element for element in ids if element in known]
-
-    def _unknown_elements(self, instance: str, unknown: list[str]) -> str:
-        """Why ``unknown`` ids of the instance are not watched, with the elements it has."""
+    def _elements(self, instance: str, ids: list[str]) -> tuple[list[str], str | None]:
+        """The ids that are probed elements (or pins, ``box.Q``) of the instance's POU, and why the others are not
+        watched (None: every id is known)."""
         pou = self._pou_of(instance)
-        listed = ", ".join(sorted(self._ctx.probes_of(pou).elements)[:30]) or "none: it is not a ladder or FBD POU"
-        return f"{instance} ({pou}) has no element {unknown[0]!r} (elements: {listed})"
+        elements = set(self._ctx.probes_of(pou).elements)
+        known = [element for element in ids if element in elements]
+        unknown = [element for element in ids if element not in elements]
+        if not unknown:
+            return known, None
+        listed = ", ".join(sorted(elements)[:30]) or "none: it is not a ladder or FBD POU"
+        return known, f"{instance} ({pou}) has no element {unknown[0]!r} (elements: {listed})"
 
     def _pou_of(self, instance: str) -> str:
         name = instance.strip().upper()
