@@ -22,7 +22,7 @@ from .context_typing import default_type, settle, untyped_leaves, untyped_result
 from .interfaces import check_attempt, reference_comparison
 from .methods import check_property, is_self, own_property, this_type, unknown_member_hint
 from .rules import EnumValue, assignable_or_report, constant_value, root_name
-from .symbols import CheckResult, PouInfo, PropertyRef, Symbol
+from .symbols import CheckResult, PouInfo, PropertyRef, Symbol, TypeDef
 from .types import ERROR, Type
 
 _ACCESSES = (ast.Name, ast.Member, ast.Index)
@@ -159,15 +159,7 @@ class BodyChecker:
         if target is None:
             typedef = self.result.types.get(node.type_name.upper())
             if typedef is not None and isinstance(typedef.type, t.EnumType) and isinstance(node.value, ast.Name):
-                if node.value.name.upper() in typedef.type.values:
-                    return typedef.type
-                self.report(
-                    "ST-UNKNOWN-VAR",
-                    f"'{node.value.name}' is not a value of {typedef.name}"
-                    + did_you_mean(node.value.name, [v[0] for v in typedef.type.values.values()]),
-                    node,
-                )
-                return ERROR
+                return typedef.type if self._enum_member(typedef, node.value.name, node) is not None else ERROR
             self.report("ST-UNKNOWN-TYPE", f"unknown type '{node.type_name}' in typed literal", node)
             return ERROR
         value = self.typed(node.value)
@@ -288,14 +280,21 @@ class BodyChecker:
         typedef = self.result.types.get(base.name.upper())
         if typedef is None or not isinstance(typedef.type, t.EnumType) or base.name.upper() in self.result.pous:
             return None
-        enum = typedef.type
-        if node.name.upper() not in enum.values:
-            message = f"'{node.name}' is not a value of {typedef.name}"
-            self.report("ST-UNKNOWN-VAR", message + did_you_mean(node.name, [v[0] for v in enum.values.values()]), node)
+        member = self._enum_member(typedef, node.name, node)
+        if member is None:
             return ERROR
-        written, value = enum.values[node.name.upper()]
-        node.ref = EnumValue(enum, written, value)
-        return enum
+        node.ref = EnumValue(typedef.type, *member)
+        return typedef.type
+
+    def _enum_member(self, typedef: TypeDef, name: str, node: Any) -> tuple[str, int] | None:
+        """(name as declared, value) of ``name`` in the enumeration ``typedef`` (``E#A``, ``E.A``); None, reported
+        at ``node``, when it has no such value."""
+        values = typedef.type.values
+        if name.upper() in values:
+            return values[name.upper()]
+        message = f"'{name}' is not a value of {typedef.name}"
+        self.report("ST-UNKNOWN-VAR", message + did_you_mean(name, [v[0] for v in values.values()]), node)
+        return None
 
     def _fb_member(self, node: ast.Member, base: t.FbType) -> Type:
         upper = node.name.upper()
