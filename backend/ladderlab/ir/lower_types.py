@@ -295,11 +295,9 @@ class TypeLowering:
             if isinstance(node.ty, t.EnumType) and isinstance(node.value, ast.Name):
                 return node.ty.values[node.value.name.upper()][1]
             return self.raw_constant(node.value, depth + 1)
-        if isinstance(node, ast.Member) and isinstance(node.ref, EnumValue):  # Color.Green
+        if isinstance(node, (ast.Name, ast.Member)) and isinstance(node.ref, EnumValue):  # Green, Color.Green
             return node.ref.value
         if isinstance(node, ast.Name):
-            if isinstance(node.ref, EnumValue):
-                return node.ref.value
             if isinstance(node.ref, Symbol) and node.ref.constant and node.ref.init is not None:
                 symbol = node.ref
                 return self.initial(symbol.type, symbol.type_spec, symbol.init)
