@@ -130,12 +130,13 @@ sc := SIZEOF(c);"""
     assert seen == [2, 0x00, 0xFF, 0xFFFF, 0xFFFFFF01, 2, 4]
 
 
-def test_a_pointer_to_an_enumeration_faults_reading_an_integer_that_is_no_member():
+@pytest.mark.parametrize("variant", ("fast", "monitor", "debug"))
+def test_a_pointer_to_an_enumeration_faults_reading_an_integer_that_is_no_member(variant):
     """x is an INT: 2 read through a POINTER TO Mode is fast; 3 is no Mode, a fault at the reading statement; n
     keeps fast."""
     body = "x := x + 1;\np := ADR(x);\nn := p^;"
     text = program("x : INT := 1; p : POINTER TO Mode; n : Mode;", body, TYPES)
-    sim = build(text).simulation()
+    sim = build(text, variant).simulation()
     sim.cycle(1)
     assert (sim.fault, sim.read("Main.n")) == (None, 2)
     sim.cycle(1)
@@ -198,17 +199,23 @@ n := SetMode(m3);"""
     ]
 
 
-def test_a_user_write_through_a_pointer_of_another_type_is_refused_when_no_member_has_it():
+def test_a_user_write_or_read_through_a_pointer_of_another_type_is_refused_when_no_member_has_it():
     """Online (ON-11): ``Main.p^`` := 2 is written into m at the next scan; 5 is refused when given, in the fault's
-    words, and nothing is written."""
-    sim = build(program("m : Mode; p : POINTER TO INT;", "p := ADR(m);", TYPES)).simulation()
+    words, and nothing is written. ``Main.q^``, a POINTER TO Mode over the INT x = 5, is no Mode (reading it is
+    refused); x takes a Mode value written through it."""
+    declarations = "m : Mode; x : INT := 5; p : POINTER TO INT; q : POINTER TO Mode;"
+    sim = build(program(declarations, "p := ADR(m);\nq := ADR(x);", TYPES)).simulation()
     sim.cycle(1)
     sim.write("Main.p^", 2)
     with pytest.raises(ValueError) as refused:
         sim.write("Main.p^", 5)
     assert str(refused.value) == "MAIN.P^: 5 is none of the values of the enumeration MODE: written through ADR(m)"
+    with pytest.raises(ValueError) as unread:
+        sim.read("Main.q^")
+    assert str(unread.value) == "MAIN.Q^: 5 is none of the values of the enumeration MODE: read through ADR(x)"
+    sim.write("Main.q^", 1)
     sim.cycle(1)
-    assert (sim.fault, sim.read("Main.m")) == (None, 2)
+    assert (sim.fault, sim.read("Main.m"), sim.read("Main.x")) == (None, 2, 1)
 
 
 @settings(max_examples=40, deadline=None)
