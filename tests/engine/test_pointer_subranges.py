@@ -180,21 +180,6 @@ END_FUNCTION""",
     ]
 
 
-def test_an_enumeration_seen_as_an_integer_stays_refused_and_its_own_pointer_works():
-    """CODESYS stores an enumeration as its base type; LadderLab refuses another type's pointer over it at compile
-    time (no value outside its members can be written that way) and writes members through a POINTER TO E."""
-    enum = "TYPE E : (red, green, blue); END_TYPE"
-    found = errors(program("e : E; p : POINTER TO INT;", "p := ADR(e);\np^ := 7;", enum))
-    assert len(found) == 1 and found[0].endswith(
-        "error IR-UNSUPPORTED: a REF_TO INT cannot see an E as bytes: the enumeration E (CODESYS stores it as its base "
-        "type, INT unless it names another)"
-    ), found
-    text = program("e : E; p : POINTER TO E;", "p := ADR(e);\np^ := E#blue;", enum)
-    sim = build(text).simulation()
-    sim.cycle(1)
-    assert sim.fault is None and sim.read("Main.e") == 2  # blue, the third member
-
-
 @settings(max_examples=60, deadline=None)
 @given(low=st.integers(-200, 200), span=st.integers(0, 300), value=st.integers(-32768, 32767))
 def test_any_value_written_through_a_pointer_is_kept_in_range_or_faults(low, span, value):

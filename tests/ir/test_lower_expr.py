@@ -291,8 +291,9 @@ def test_unsupported_expressions_are_located_errors():
 
 def test_sizeof_is_a_constant_in_bytes():
     """TYP-45 as CODESYS counts (ironplc end_to_end_sizeof): widths, STRING[n] n + 1, arrays summed, a STRUCT with
-    its padding (ir/byte_layout.py: TPair's a INT at 0..1, padding 2..3, c DINT at 4..7); a STRUCT CODESYS lays out
-    differently on different targets (an enumeration member: its base type) has no SIZEOF."""
+    its padding (ir/byte_layout.py: TPair's a INT at 0..1, padding 2..3, c DINT at 4..7; an enumeration member is
+    its base type, INT: a at 0..1, c at 2..3); a STRUCT whose bytes are not the values LadderLab keeps (a TIME
+    member) has no SIZEOF."""
     assert value("SIZEOF(i)", "d") == const(2, DINT)
     assert value("SIZEOF(arr)", "d") == const(6, DINT)
     assert value("SIZEOF(LREAL)", "d") == const(8, DINT)
@@ -300,10 +301,13 @@ def test_sizeof_is_a_constant_in_bytes():
     assert value(
         "SIZEOF(TPair)", "d", extra=TYPES + "\nTYPE TPair : STRUCT a : INT; c : DINT; END_STRUCT; END_TYPE"
     ) == const(8, DINT)
+    assert value(
+        "SIZEOF(TPair)", "d", extra=TYPES + "\nTYPE TPair : STRUCT a : INT; c : TColor; END_STRUCT; END_TYPE"
+    ) == const(4, DINT)
     refused = "PROGRAM P\nVAR d : DINT; END_VAR\nd := SIZEOF(TPair);\nEND_PROGRAM\n" + TYPES
-    assert errors(refused + "\nTYPE TPair : STRUCT a : INT; c : TColor; END_STRUCT; END_TYPE") == [
-        "P/body:3:6, POU P: error IR-UNSUPPORTED: SIZEOF is refused for the STRUCT TPAIR, whose member C is the "
-        "enumeration TCOLOR (CODESYS stores it as its base type, INT unless it names another)"
+    assert errors(refused + "\nTYPE TPair : STRUCT a : INT; c : TIME; END_STRUCT; END_TYPE") == [
+        "P/body:3:6, POU P: error IR-UNSUPPORTED: SIZEOF is refused for the STRUCT TPAIR, whose member C is a TIME "
+        "(its bytes in CODESYS are not the value LadderLab keeps)"
     ]
 
 

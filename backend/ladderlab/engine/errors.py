@@ -62,6 +62,14 @@ def check_subrange(value: int, low: int, high: int) -> int:
     raise PlcRuntimeError(SUBRANGE, f"{value} is outside the subrange {low}..{high}")
 
 
+def check_member(value: int, values: tuple[int, ...], enumeration: str) -> int:
+    """``value`` unchanged when it is the value of one of the enumeration's members; raises otherwise (an
+    enumeration's values are its subrange: a pointer of its base type could write any other, docs/st.md)."""
+    if value in values:
+        return value
+    raise PlcRuntimeError(SUBRANGE, f"{value} is none of the values of the enumeration {enumeration}")
+
+
 def check_fit(value: int, low: int, high: int, text: str, type_name: str) -> int:
     """``value`` unchanged when it lies in low..high: the value of ``text``, a CODESYS register holding an operation
     of type ``type_name``, which every target gives alike only there (st/registers.py); raises otherwise."""

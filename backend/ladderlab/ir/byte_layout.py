@@ -4,7 +4,9 @@ from the value (engine/codegen/views.py); the specs here are what it is given.
 
 A spec is ``("int", size, signed)`` for the integers and bit strings, ``("real", size)``, ``("bool",)`` (one byte),
 ``("string", n)`` (STRING[n]: n + 1 bytes, a NUL after the text), ``("range", low, high, base spec)`` (a subrange:
-its base's bytes, which must decode to low..high), ``("array", count, element spec)`` (the elements
+its base's bytes, which must decode to low..high), ``("enum", name, values, base spec)`` (an enumeration: its
+base's bytes, as CODESYS stores it, which must decode to one of its members' values), ``("array", count, element
+spec)`` (the elements
 one after another; a multi-dimensional array is an array of arrays, the first dimension outermost) or
 ``("struct", name, size, pack_mode, ((member, offset, spec), ...))`` (a STRUCT: its members in declaration order
 at CODESYS's alignment, padding bytes between and after them; pack_mode as declared, None without one).
@@ -62,7 +64,8 @@ def _layout(ty: IrType, default: int) -> Spec | str:
     if isinstance(ty, Struct):
         return _struct_layout(ty, default)
     if isinstance(ty, Enum):
-        return f"the enumeration {ty.name} (CODESYS stores it as its base type, INT unless it names another)"
+        values = tuple(sorted({value for _, value in ty.values}))
+        return ("enum", ty.name, values, _layout(Elementary(ty.base), default))
     if isinstance(ty, Reference):
         return f"{article(describe(ty))} (an address: 4 or 8 bytes depending on the target)"
     return f"{article(describe(ty))} (it has no byte layout)"
@@ -70,8 +73,9 @@ def _layout(ty: IrType, default: int) -> Spec | str:
 
 def same_target(referred: IrType, target: IrType) -> bool:
     """A reference to ``target`` reaches a variable of ``referred`` directly: one type (STRING lengths aside). A
-    subrange and its base differ: a write through a base-typed pointer must not leave the subrange, a read through a
-    subrange-typed one must not return a value outside it, so those go through a view."""
+    subrange (an enumeration) and its base differ: a write through a base-typed pointer must not leave the subrange
+    (give a value that is none of the enumeration's), a read through a subrange-typed (enumeration-typed) one must not
+    return one, so those go through a view."""
     if referred == target:
         return True
     return isinstance(referred, Elementary) and isinstance(target, Elementary) and referred.name == target.name
@@ -90,8 +94,8 @@ def view_specs(referred: IrType, target: IrType) -> tuple[Spec, Spec] | str:
 def in_out_view(argument: IrType, parameter: IrType) -> tuple[Spec, Spec] | str | None:
     """How a VAR_IN_OUT of type ``parameter`` reaches the variable ``argument`` passed to it: directly (None); through
     a view (its specs) when the two are one integer type but for a subrange (``INT`` and ``INT (0..100)``), which
-    keeps the variable in its range; or not at all (why): an array whose elements differ so, which the callee would
-    reach element by element unchecked."""
+    keeps the variable in its range; or not at all (why): an array whose elements differ so (or by an enumeration),
+    which the callee would reach element by element unchecked."""
     if argument == parameter:
         return None
     if isinstance(argument, Elementary | Subrange) and isinstance(parameter, Elementary | Subrange):
@@ -99,17 +103,19 @@ def in_out_view(argument: IrType, parameter: IrType) -> tuple[Spec, Spec] | str 
         same_base = _base(argument) == _base(parameter)
         return (whole, seen) if same_base and isinstance(whole, tuple) and isinstance(seen, tuple) else None
     elements = _innermost(argument), _innermost(parameter)
-    if elements[0] != elements[1] and any(isinstance(element, Subrange) for element in elements):
+    checked = [element for element in elements if isinstance(element, Subrange | Enum)]
+    if elements[0] != elements[1] and checked:
+        what = "subrange" if isinstance(checked[0], Subrange) else "enumeration"
         return (
-            f"{article(describe(argument))} cannot be passed to a VAR_IN_OUT {describe(parameter)}: the subrange of "
+            f"{article(describe(argument))} cannot be passed to a VAR_IN_OUT {describe(parameter)}: the {what} of "
             "its elements would go unchecked (pass an array of the parameter's element type)"
         )
     return None
 
 
-def has_subrange(ty: IrType) -> bool:
-    """``ty`` is a subrange or an array of them."""
-    return isinstance(ty, Subrange) or (isinstance(ty, Array) and has_subrange(ty.element))
+def has_checked_values(ty: IrType) -> bool:
+    """``ty`` is a subrange or an enumeration, or an array of them: not every value of its base is one of its own."""
+    return isinstance(_innermost(ty), Subrange | Enum)
 
 
 def _innermost(ty: IrType) -> IrType:
@@ -144,7 +150,7 @@ def _alignment(spec: Spec, default: int) -> int:
     kind = spec[0]
     if kind in ("int", "real"):
         return spec[1]
-    if kind == "range":
+    if kind in ("range", "enum"):
         return _alignment(spec[3], default)
     if kind == "array":
         return _alignment(spec[2], default)
@@ -178,7 +184,7 @@ def _spec_size(spec: Spec) -> int:
         return spec[1]
     if kind == "string":
         return spec[1] + 1
-    if kind == "range":
+    if kind in ("range", "enum"):
         return _spec_size(spec[3])
     if kind == "array":
         return spec[1] * _spec_size(spec[2])

@@ -36,7 +36,7 @@ from ..st.methods import is_self, is_super
 from ..st.printer import print_expression
 from ..st.rules import EnumValue
 from ..st.symbols import PouInfo, PropertyRef, Symbol
-from .byte_layout import has_subrange, same_target, view_specs
+from .byte_layout import has_checked_values, same_target, view_specs
 from .codesys_dates import in_seconds
 from .context import PouContext
 from .lower_types import LoweringError, byte_size, engine_value, ir_default
@@ -176,7 +176,8 @@ def _referred_text(ty: IrType) -> str:
 
 def convert(expr: Expr, target: IrType) -> Expr:
     """``expr`` stored in ``target``: a ``Convert`` for an accepted widening; a reference copied into a reference
-    whose target differs from its own by a subrange (an output ``q => p``) sees its variable through a view."""
+    whose target differs from its own by a subrange or an enumeration (an output ``q => p``) sees its variable
+    through a view."""
     source = expr.type
     if source is target:  # the common case: lowered types are mostly shared instances
         return expr
@@ -189,7 +190,7 @@ def convert(expr: Expr, target: IrType) -> Expr:
     if (
         isinstance(source, Reference)
         and isinstance(target, Reference)
-        and (has_subrange(source.target) or has_subrange(target.target))
+        and (has_checked_values(source.target) or has_checked_values(target.target))
     ):
         return _reference_to(expr, target, None)
     return expr
@@ -600,7 +601,7 @@ def _reference_of(value: ast.Expr, ty: IrType, text: str, ctx: PouContext) -> Ad
     for a variable with a subrange (or an array of one), whose own type it is: the checker's loses the range, which a
     reference to the base type must then keep (``_reference_to``); ``text`` shows it."""
     var = lower_access(value, ctx)
-    return AddressOf(var, Reference(var.type) if has_subrange(var.type) else ty, text)
+    return AddressOf(var, Reference(var.type) if has_checked_values(var.type) else ty, text)
 
 
 def retarget(expr: Expr, target: Reference, node: ast.Expr) -> Expr:

@@ -17,7 +17,7 @@ from ..st import types as t
 from ..st.methods import SUPER, is_self
 from ..st.printer import print_expression
 from ..st.symbols import PouInfo, PropertyRef, Symbol
-from .byte_layout import has_subrange
+from .byte_layout import has_checked_values
 from .context import PouContext
 from .lower_expr import (
     address_of,
@@ -126,7 +126,7 @@ def _assign(statement: ast.Assign, ctx: PouContext) -> list[Stmt]:
         )
         lowered = Attempt(lowered, implementing, lowered.type)
     place = lower_access(target, ctx)
-    if isinstance(place.type, Reference) and has_subrange(place.type.target):  # the checker's type lost the range
+    if isinstance(place.type, Reference) and has_checked_values(place.type.target):  # the checker's may lack the range
         lowered = retarget(lowered, place.type, value)
     return [Assign(place, lowered, origin)]
 

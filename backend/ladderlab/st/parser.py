@@ -28,7 +28,7 @@ from .errors import describe_unexpected, last_token, literal_problem, would_acce
 from .fast_lalr import NotFast, fast_parse
 from .lark_cache import cached_lark
 from .nesting import too_deep
-from .pragmas import attach_pack_modes
+from .pragmas import attach_pack_modes, misplaced_pack_modes
 from .quick_decls import DEPTH as QUICK_DEPTH
 from .quick_decls import quick_declarations
 from .transformer import AstBuilder, StSyntaxError
@@ -162,8 +162,8 @@ def parse_source(text: str, *, file: str | None = None, nested_comments: bool = 
     prepared = _prepare(text, nested_comments)
     result = _run(prepared, "start_source", file)
     if result.ast is not None:
+        result.diagnostics += attach_pack_modes(result.ast, prepared, file)
         _name_pous(result)
-        attach_pack_modes(result.ast, prepared)
         return _finish(result, text, file)
     items: list[Any] = []
     diagnostics: list[Diagnostic] = []
@@ -176,7 +176,7 @@ def parse_source(text: str, *, file: str | None = None, nested_comments: bool = 
     if not diagnostics:  # the split hid the problem (e.g. text outside any unit): keep the whole-file report
         diagnostics = result.diagnostics
     source = ast.Source(items, ast.NO_SPAN)
-    attach_pack_modes(source, prepared)
+    diagnostics += attach_pack_modes(source, prepared, file)
     return _finish(ParseResult(source, diagnostics), text, file)
 
 
@@ -196,14 +196,19 @@ def parse_declarations(
     quick = quick_declarations(prepared, grammar_keywords())
     if quick is not None:
         return _finish(ParseResult(quick), text, file, pou, depth=QUICK_DEPTH)
-    return _finish(_run(prepared, "start_decls", file, pou=pou), text, file, pou)
+    result = _run(prepared, "start_decls", file, pou=pou)
+    result.diagnostics += misplaced_pack_modes(prepared, file, pou)  # no TYPE here for one to pack
+    return _finish(result, text, file, pou)
 
 
 def parse_statements(
     text: str, *, file: str | None = None, nested_comments: bool = False, pou: str | None = None
 ) -> ParseResult:
     """A statement list (an ST POU body): ``list[Stmt]``."""
-    return _finish(_run(_prepare(text, nested_comments), "start_stmts", file, pou=pou), text, file, pou)
+    prepared = _prepare(text, nested_comments)
+    result = _run(prepared, "start_stmts", file, pou=pou)
+    result.diagnostics += misplaced_pack_modes(prepared, file, pou)
+    return _finish(result, text, file, pou)
 
 
 def parse_expression(

@@ -5,14 +5,19 @@ to the TYPE declaration it stands above (``TypeDecl.pack_mode``), as CODESYS pla
 the declaration of the data structure" (https://content.helpme-codesys.com/en/CODESYS%20Development%20System/
 _cds_pragma_attribute_pack_mode.html). Written before ``TYPE`` or before the name inside a TYPE block, it belongs
 to the declaration that follows (comments and other pragmas may stand between). One that stands above anything
-else (a function block, a variable) stays ignored, as before: LadderLab lays out no FB instance's memory.
+else (a function block, a variable, a STRUCT's member) has no effect - LadderLab lays out no FB instance's memory,
+and CODESYS packs a STRUCT as a whole - and is the warning ST-PRAGMA where it stands, so it is not taken for one that
+packs (``_misplaced``).
 """
 
 from __future__ import annotations
 
+import bisect
 import re
+from collections.abc import Iterator
 from typing import Any
 
+from ..model.diagnostics import Diagnostic
 from . import ast
 
 _PACK_MODE = re.compile(r"\{\s*attribute\s+'pack_mode'\s*:=\s*'([^']*)'\s*\}", re.IGNORECASE)
@@ -36,12 +41,13 @@ def block_text(block: ast.TypeBlock, text: str, head: str) -> str:
     return f"{pack_mode_pragma(first.pack_mode)}\n{text}"
 
 
-def attach_pack_modes(tree: Any, text: str) -> None:
+def attach_pack_modes(tree: Any, text: str, file: str | None = None) -> list[Diagnostic]:
     """Set ``pack_mode`` (the value as written) of each TYPE declaration of ``tree`` that a pack_mode pragma
-    stands above in ``text`` (the text the parser read, its spans' lines and columns)."""
+    stands above in ``text`` (the text the parser read, its spans' lines and columns); the warnings of the pragmas
+    that stand above nothing they pack (``_misplaced``)."""
     if "pack_mode" not in text or not isinstance(tree, ast.Source):
-        return
-    starts = [0] + [m.end() for m in re.finditer("\n", text)]
+        return []
+    starts = _line_starts(text)
     decls = {
         starts[d.span.line - 1] + d.span.column - 1: d
         for item in tree.items
@@ -49,12 +55,62 @@ def attach_pack_modes(tree: Any, text: str) -> None:
         for d in item.decls
         if d.span.line
     }
+    unplaced = []
+    for pragma in _pack_modes(text):
+        decl = decls.get(_next_declaration(text, pragma.end()))
+        if decl is not None:
+            decl.pack_mode = pragma.group(1)
+        else:
+            unplaced.append(_misplaced(pragma, starts, file, None))
+    return unplaced
+
+
+def misplaced_pack_modes(text: str, file: str | None = None, pou: str | None = None) -> list[Diagnostic]:
+    """The warnings of the pack_mode pragmas of ``text``, a POU's declarations or body or a VAR_GLOBAL block, where
+    none packs anything (no TYPE is declared there)."""
+    if "pack_mode" not in text:
+        return []
+    starts = _line_starts(text)
+    return [_misplaced(pragma, starts, file, pou) for pragma in _pack_modes(text)]
+
+
+def _misplaced(pragma: re.Match[str], starts: list[int], file: str | None, pou: str | None) -> Diagnostic:
+    """ST-PRAGMA at ``pragma``: it stands above no STRUCT's TYPE declaration, so it packs nothing."""
+    line, column = _position(starts, pragma.start())
+    end_line, end_column = _position(starts, pragma.end())
+    return Diagnostic(
+        severity="warning",
+        code="ST-PRAGMA",
+        message=(
+            "the attribute 'pack_mode' has no effect here: it packs a STRUCT when it stands above the STRUCT's TYPE "
+            "declaration (a function block, a variable or a member keeps its layout); move it there or remove it"
+        ),
+        file=file,
+        pou=pou,
+        line=line,
+        column=column,
+        end_line=end_line,
+        end_column=end_column,
+    )
+
+
+def _pack_modes(text: str) -> Iterator[re.Match[str]]:
+    """The pack_mode pragmas of ``text`` (matches: the value written is group 1), outside strings and comments."""
     for lexed in _LEXED.finditer(text):
-        pragma = _PACK_MODE.fullmatch(lexed.group(1) or "")
-        if pragma is not None:
-            decl = decls.get(_next_declaration(text, lexed.end()))
-            if decl is not None:
-                decl.pack_mode = pragma.group(1)
+        if lexed.group(1) is not None:
+            pragma = _PACK_MODE.fullmatch(text, lexed.start(1), lexed.end(1))
+            if pragma is not None:
+                yield pragma
+
+
+def _line_starts(text: str) -> list[int]:
+    return [0] + [m.end() for m in re.finditer("\n", text)]
+
+
+def _position(starts: list[int], offset: int) -> tuple[int, int]:
+    """1-based line and column of ``offset``."""
+    line = bisect.bisect_right(starts, offset)
+    return line, offset - starts[line - 1] + 1
 
 
 def _next_declaration(text: str, position: int) -> int:

@@ -1429,6 +1429,18 @@ export const DIAGNOSTICS = {
       summary:
         "Control code calls a plant or its method or property (plants run in the plant task, never called).",
     },
+    "ST-PRAGMA": {
+      anchor: "st-pragma",
+      area: "st",
+      example:
+        "{attribute 'pack_mode' := '1'}\nFUNCTION_BLOCK Telegram\nVAR\n    header : BYTE;\n    length : DINT;\nEND_VAR\nEND_FUNCTION_BLOCK",
+      example_language: "st",
+      example_note:
+        "CODESYS's `{attribute 'pack_mode' := 'N'}` packs a STRUCT when it stands above the STRUCT's TYPE declaration (before `TYPE`, or before the name inside a TYPE block). Above anything else - a function block, a variable, a STRUCT's member - it packs nothing here (LadderLab lays out no function block instance's memory), and the warning says so where it stands, so it is not taken for one that packs.",
+      fix: "move the attribute above the TYPE declaration of the STRUCT it should pack, or remove it.",
+      severity: "warning",
+      summary: "A pragma stands where it has no effect.",
+    },
     "ST-RANGE": {
       anchor: "st-range",
       area: "st",

@@ -7,10 +7,11 @@ bytes the variable cannot hold exactly (a BOOL byte of 2, a character after a ST
 padding byte other than 0) is a fault, so no value changes other than the bytes written; so is reading a byte other
 than 0 or 1 as a BOOL (CODESYS's BOOL is 0 or 1, any other byte it shows as INVALID). The layouts come from
 the lowering as specs (ir/byte_layout.py): ``("int", size, signed)``, ``("real", size)``, ``("bool",)``,
-``("string", n)``, ``("range", low, high, base spec)``, ``("array", count, element spec)``,
-``("struct", name, size, pack_mode, members)``. A subrange's bytes must decode into its range: a write through a
-pointer of its base type (``POINTER TO INT`` over an ``INT (0..100)``) and a read through a pointer to a subrange
-over a variable of its base type fault ``subrange_violation`` outside it, naming the pointer (``ADR(v)``).
+``("string", n)``, ``("range", low, high, base spec)``, ``("enum", name, values, base spec)``, ``("array", count,
+element spec)``, ``("struct", name, size, pack_mode, members)``. A subrange's bytes must decode into its range, an
+enumeration's into one of its members' values: a write through a pointer of its base type (``POINTER TO INT`` over an
+``INT (0..100)`` or a ``Color``) and a read through a pointer to a subrange (an enumeration) over a variable of its
+base type fault ``subrange_violation`` outside it, naming the pointer (``ADR(v)``).
 """
 
 from __future__ import annotations
@@ -19,7 +20,15 @@ import functools
 import struct
 from typing import Any
 
-from ..errors import INDEX_RANGE, SUBRANGE, PlcRuntimeError, check_subrange, null_dereference, pointer_outside_bytes
+from ..errors import (
+    INDEX_RANGE,
+    SUBRANGE,
+    PlcRuntimeError,
+    check_member,
+    check_subrange,
+    null_dereference,
+    pointer_outside_bytes,
+)
 from . import names
 from .runtime import ElementRef, Ref, Seen, Structure, dangling, deep_copy
 
@@ -63,23 +72,24 @@ class Scalar:
         return new
 
 
-class Ranged:
-    """A subrange of an integer type: its base's bytes, decoded and written only as a value in ``low..high``."""
+class Restricted:
+    """A subrange of an integer type or an enumeration (stored as its base type, CODESYS): its base's bytes, decoded
+    and written only as a value ``admit`` lets through (it raises for any other)."""
 
-    def __init__(self, low: int, high: int, base: Scalar) -> None:
-        self.low, self.high, self.base, self.size = low, high, base, base.size
+    def __init__(self, base: Scalar, admit: Any) -> None:
+        self.base, self.admit, self.size = base, admit, base.size
 
     def encode(self, value: int) -> bytes:
         return self.base.encode(value)
 
     def decode(self, data: bytes) -> int:
-        return check_subrange(self.base.decode(data), self.low, self.high)
+        return self.admit(self.base.decode(data))
 
     def read(self, value: int, offset: int, size: int) -> bytes:
         return self.base.read(value, offset, size)
 
     def write(self, value: int, offset: int, data: bytes) -> int:
-        return check_subrange(self.base.write(value, offset, data), self.low, self.high)
+        return self.admit(self.base.write(value, offset, data))
 
 
 class String:
@@ -196,7 +206,9 @@ def layout(spec: tuple) -> Any:
     if kind == "struct":
         return StructLayout(spec[1], spec[2], spec[4])
     if kind == "range":
-        return Ranged(spec[1], spec[2], layout(spec[3]))
+        return Restricted(layout(spec[3]), functools.partial(check_subrange, low=spec[1], high=spec[2]))
+    if kind == "enum":
+        return Restricted(layout(spec[3]), functools.partial(check_member, values=spec[2], enumeration=spec[1]))
     return ArrayLayout(spec[1], layout(spec[2]))
 
 
