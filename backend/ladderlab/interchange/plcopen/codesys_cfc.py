@@ -89,7 +89,7 @@ class CodesysChart:
         for element in [e for e in graph.elements.values() if e.tag == "vendorElement"]:
             kind = _vendor_text(element.node, self.reader, ELEMENTTYPE_DATA, "ElementType") or "vendor element"
             self.error(
-                f"the CFC {kind} (localId {element.local_id}) has no LadderLab chart element; it was left out "
+                f"the CFC {kind} has no LadderLab chart element; it was left out "
                 "(wire the structure's members, or a connector and continuation, instead)",
                 element,
             )
@@ -125,13 +125,13 @@ class CodesysChart:
             type_name = element.node.get("typeName", "")
             if "." in type_name or (call is not None and call not in _CALLS):
                 self.error(
-                    f"box {type_name} (localId {element.local_id}) is a {call or 'method'} call, which a LadderLab "
+                    f"box {type_name} is a {call or 'method'} call, which a LadderLab "
                     "chart cannot hold (its boxes call functions and function blocks); it was left out",
                     element,
                 )
                 _remove(graph, element.local_id)
             elif call == "functionblock" and not element.node.get("instanceName"):
-                self.error(f"box {type_name} (localId {element.local_id}) names no instance; it was left out", element)
+                self.error(f"box {type_name} names no instance; it was left out", element)
                 _remove(graph, element.local_id)
             elif call == "operator":
                 renamed |= self.operator_pins(element)

@@ -1,0 +1,312 @@
+"""CODESYS CFC POUs in PLCopen XML (issue 25): the chart in the body's addData, read into LadderLab's CFC model.
+
+What real exports look like was read in public files: MatGros/2026_Projet_YGO_ExcavatriceDragage
+``TOOLS/ST_PLCOPENXML_GENERATOR/samples_reference_codesys/PRG_CFC_3FB.xml`` (an export of CODESYS V3.5 SP19 Patch 1:
+an empty ``<ST>``, the chart in ``.../plcopenxml/cfc``, every wire through an unnamed ``<connector>`` at (0,0)
+whose connection names the source pin, boxes with ``cfccalltype`` ``functionblock``, localId 0, grid positions,
+unwired inputs listed without a connection, in-out pins); the CFC POU template of a TwinCAT scripting project
+(``PouTemplates.CFCPOU``: an ``operator`` box ADD with pins ``In1``/``In3``/``Out1``) and the generators of
+CODESYS CFC XML in mdhl's KNX/MP-bus tools (``mdhl_Knx.h``, ``mdhl_Knx_Items*.h``: comments, ``functionblock`` and
+``operator`` boxes, an operator's result connected with an empty ``formalParameter``). The fixture
+tests/interchange/data/codesys_cfc.xml has that structure with LadderLab's own names and logic; the expected values
+are worked out by hand in each docstring. What CODESYS does without execution order numbers (its automatic data
+flow mode: data flow, then top to bottom, left to right) is from the CODESYS online help, "Automatic Execution
+Order by Data Flow" and "Dialog: Properties: CFC Execution Order".
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from ladderlab.interchange.plcopen.codesys_cfc import GRID
+from ladderlab.interchange.plcopen.exporter import export_plcopen
+from ladderlab.interchange.plcopen.importer import import_plcopen
+from ladderlab.model.cfc import CfcBody
+from ladderlab.model.fbd import Block, FbdComment, OutputNode, PinFlags, Position
+from ladderlab.simulation.build import build_project
+from tests.interchange.plcopen_helpers import project_xml, xsd_errors
+
+FIXTURE = Path(__file__).parent / "data" / "codesys_cfc.xml"
+EXPECTED_WARNINGS = [
+    ("PLCOPEN-VERSION", "the document uses 'http://www.plcopen.org/xml/tc6_0200'; it is read as TC6 v2.01"),
+    (
+        "PLCOPEN-ADDDATA",
+        "addData 'http://www.3s-software.com/plcopenxml/objectid' (3 places) is another tool's data that LadderLab "
+        "cannot carry; it was dropped",
+    ),
+]
+
+
+def imported(data: bytes | None = None):
+    result = import_plcopen(data or FIXTURE.read_bytes())
+    assert result.project is not None
+    return result
+
+
+def chart(result, name: str):
+    pou = next(p for p in result.project.pous if p.name == name)
+    assert pou.language == "cfc" and isinstance(pou.body, CfcBody)
+    return pou.body.chart
+
+
+def test_a_codesys_chart_is_a_cfc_pou_with_its_elements_CFC_01():
+    """Every element but the wire points becomes a chart element: the unnamed connectors are gone, each wire runs
+    from its source pin (the ADD's Out1 is OUT, its In1/In2 IN1/IN2), CallType and ElementType are understood
+    (not reported as dropped), the comment keeps its text."""
+    result = imported()
+    assert [(d.code, d.message) for d in result.diagnostics] == EXPECTED_WARNINGS
+    main = chart(result, "PLC_PRG")
+    kinds = [n.type for n in main.nodes]
+    assert kinds.count("connector") == 0 and kinds.count("continuation") == 0
+    assert kinds == [
+        *("comment", "input", "input", "block", "output", "input", "input", "block", "output", "output"),
+        *("input", "jump", "input", "output", "label", "input", "input", "input", "block", "output"),
+        *("input", "block", "output"),
+    ]
+    by_id = {n.id: n for n in main.nodes}
+    wires = [(by_id[w.from_.node], w.from_.pin, by_id[w.to.node], w.to.pin) for w in main.wires]
+    add = next(n for n in main.nodes if isinstance(n, Block) and n.call == "ADD")
+    into_add = sorted((src.expr, pin) for src, _, dst, pin in wires if dst is add)
+    assert into_add == [("inflow", "IN2"), ("level", "IN1")]
+    assert [(pin, dst.var) for src, pin, dst, _ in wires if src is add] == [("OUT", "level")]
+    [comment] = [n for n in main.nodes if isinstance(n, FbdComment)]
+    assert comment.text == "Fill by inflow; empty once over the limit"
+
+
+def test_call_types_negations_and_places_are_kept():
+    """The CTU is the instance pulses (functionblock) with R negated; F_DOUBLE (function) has no instance and its
+    result, written without a pin name, is OUT; notFull is a negated output; places are grid units times GRID
+    (the ADD at 12, 2)."""
+    main = chart(imported(), "PLC_PRG")
+    blocks = {n.call: n for n in main.nodes if isinstance(n, Block)}
+    assert (blocks["CTU"].instance, blocks["CTU"].pins) == ("pulses", {"R": PinFlags(negated=True)})
+    assert (blocks["F_DOUBLE"].instance, blocks["F_DOUBLE"].pins) == (None, None)
+    assert [w.from_.pin for w in main.wires if w.from_.node == blocks["F_DOUBLE"].id] == ["OUT"]
+    outputs = {n.var: n.mode for n in main.nodes if isinstance(n, OutputNode) and n.var != "level"}
+    assert outputs == {"full": "normal", "notFull": "negated", "count": "normal", "twice": "normal"}
+    assert blocks["ADD"].pos == Position(x=12 * GRID, y=2 * GRID)
+
+
+def test_the_execution_order_is_the_executionorderids_CFC_02():
+    """The chart's order lists the numbered elements by number: ADD, level, GT, full, notFull, the jump, level := 0,
+    the label, CTU, count, F_DOUBLE, twice. AutoFlow has no numbers (CODESYS's automatic data flow mode): no
+    order list, so the chart runs by data flow, then top to bottom."""
+    result = imported()
+    main = chart(result, "PLC_PRG")
+    by_id = {n.id: n for n in main.nodes}
+    named = [
+        getattr(by_id[i], "call", None) or getattr(by_id[i], "var", None) or by_id[i].type for i in main.order or []
+    ]
+    assert named == [
+        "ADD",
+        "level",
+        "GT",
+        "full",
+        "notFull",
+        "jump",
+        "level",
+        "label",
+        "CTU",
+        "count",
+        "F_DOUBLE",
+        "twice",
+    ]
+    assert chart(result, "AutoFlow").order is None
+
+
+def test_the_imported_charts_run_scan_by_scan():
+    """PLC_PRG (inflow 3, limit 9): level := level + 3; full := level > 9; notFull := NOT (level > 9); when notFull
+    the jump to Done skips level := 0; pulses counts rising edges of full (R is NOT start = FALSE); twice :=
+    F_DOUBLE(level) after all that. Scans: level 3, 6, 9 (9 > 9 is FALSE), then 12 > 9: full, no jump, level 0,
+    count 1, twice 0; then 3 again. AutoFlow (a = 4), no numbers: c := b + 1 is drawn above b := a * 2 and nothing
+    wires them, so it runs first: c reads b's previous value: c 1 then 9, b 8."""
+    built = build_project(imported().project)
+    assert [d.format() for d in built.diagnostics if d.severity != "info"] == []
+    sim = built.simulation()
+    seen = []
+    for _ in range(5):
+        sim.cycle(1)
+        main = tuple(sim.read(f"PLC_PRG.{v}") for v in ("level", "full", "notFull", "count", "twice"))
+        seen.append((main, sim.read("AutoFlow.b"), sim.read("AutoFlow.c")))
+    assert seen == [
+        ((3, False, True, 0, 6), 8, 1),
+        ((6, False, True, 0, 12), 8, 9),
+        ((9, False, True, 0, 18), 8, 9),
+        ((0, True, False, 1, 0), 8, 9),
+        ((3, False, True, 1, 6), 8, 9),
+    ]
+
+
+def test_ladderlabs_export_of_the_imported_charts_is_valid_and_imports_back_the_same():
+    """LadderLab writes the imported charts as it writes its own (an IEC 61131-10 style <FBD>, TC6-valid), and
+    reads them back as the same CFC POUs."""
+    project = imported().project
+    data = export_plcopen(project)
+    assert xsd_errors(data) == []
+    again = import_plcopen(data)
+    assert [d.format() for d in again.diagnostics] == []
+    assert again.project.pous == project.pous
+
+
+# ---------------------------------------------------------------- what a LadderLab chart cannot hold
+
+
+def _in(local_id: int, expr: str, x: int = 2, y: int = 2) -> str:
+    return (
+        f'<inVariable localId="{local_id}"><position x="{x}" y="{y}" /><connectionPointOut><expression />'
+        f"</connectionPointOut><expression>{expr}</expression></inVariable>"
+    )
+
+
+def _point(local_id: int, ref: int, param: str) -> str:
+    return (
+        f'<connector localId="{local_id}" name=""><position x="0" y="0" /><connectionPointIn>'
+        f'<connection refLocalId="{ref}" formalParameter="{param}" /></connectionPointIn></connector>'
+    )
+
+
+def _out(local_id: int, order: int, ref: int, expr: str) -> str:
+    return (
+        f'<outVariable localId="{local_id}" executionOrderId="{order}"><position x="20" y="{order * 3}" />'
+        f'<connectionPointIn><relPosition x="0" y="0" /><connection refLocalId="{ref}" /></connectionPointIn>'
+        f"<expression>{expr}</expression></outVariable>"
+    )
+
+
+def _call(call: str) -> str:
+    return (
+        '<addData><data name="http://www.3s-software.com/plcopenxml/cfccalltype" handleUnknown="implementation">'
+        f'<CallType xmlns="">{call}</CallType></data></addData>'
+    )
+
+
+def _document(elements: str, variables: str = "") -> str:
+    body = (
+        '<body><ST><xhtml xmlns="http://www.w3.org/1999/xhtml" /></ST><addData>'
+        '<data name="http://www.3s-software.com/plcopenxml/cfc" handleUnknown="implementation"><CFC>\n'
+        f"{elements}\n</CFC></data></addData></body>"
+    )
+    interface = f"<interface><localVars>{variables}</localVars></interface>"
+    return project_xml(f'<pou name="Chart" pouType="program">{interface}{body}</pou>').decode()
+
+
+def _line(text: str, part: str) -> int:
+    return text[: text.index(part)].count("\n") + 1
+
+
+INT = '<variable name="{}"><type><INT /></type></variable>'
+
+
+def test_a_composer_and_a_method_box_are_located_errors_and_left_out():
+    """A composer (a vendorElement, cfcelementtype composer) and a box calling a method have no place on a LadderLab
+    chart: an error each at the element, naming the POU and the localId; the rest of the chart is read (y := 5),
+    and the output the composer fed is left unwired, which the build reports rather than running it."""
+    composer = (
+        '<vendorElement localId="3" executionOrderId="1"><position x="10" y="2" /><alternativeText>'
+        '<xhtml xmlns="http://www.w3.org/1999/xhtml">Point</xhtml></alternativeText><inputVariables>'
+        '<variable formalParameter="x"><connectionPointIn><connection refLocalId="2" /></connectionPointIn>'
+        '</variable></inputVariables><outputVariables><variable formalParameter="Out1"><connectionPointOut>'
+        '<expression /></connectionPointOut></variable></outputVariables><addData><data name="http://www.3s-'
+        'software.com/plcopenxml/cfcelementtype" handleUnknown="implementation"><ElementType xmlns="">composer'
+        "</ElementType></data></addData></vendorElement>"
+    )
+    method = (
+        '<block localId="7" executionOrderId="3" typeName="fb.Reset"><position x="10" y="8" /><inputVariables />'
+        f"<inOutVariables /><outputVariables />{_call('method')}</block>"
+    )
+    text = _document(
+        "\n".join(
+            [
+                _in(1, "a"),
+                _point(2, 1, "a"),
+                composer,
+                _point(4, 3, "Out1"),
+                _out(5, 2, 4, "x"),
+                method,
+                _in(8, "5", y=12),
+                _point(9, 8, "5"),
+                _out(10, 4, 9, "y"),
+            ]
+        ),
+        INT.format("a") + INT.format("x") + INT.format("y"),
+    )
+    result = imported(text.encode())
+    assert [(d.severity, d.code, d.format()) for d in result.diagnostics if d.severity == "error"] == [
+        (
+            "error",
+            "PLCOPEN-FBD",
+            f"POU Chart line {_line(text, '<vendorElement')}, network chart, element localId 3: error "
+            "PLCOPEN-FBD: the CFC composer has no LadderLab chart element; it was left out (wire the "
+            "structure's members, or a connector and continuation, instead)",
+        ),
+        (
+            "error",
+            "PLCOPEN-FBD",
+            f"POU Chart line {_line(text, '<block')}, network chart, element localId 7: error PLCOPEN-FBD: box "
+            "fb.Reset is a method call, which a LadderLab chart cannot hold (its boxes call functions "
+            "and function blocks); it was left out",
+        ),
+    ]
+    main = chart(result, "Chart")
+    assert sorted(n.var for n in main.nodes if isinstance(n, OutputNode)) == ["x", "y"]
+    assert not any(isinstance(n, Block) for n in main.nodes)
+    assert [d.format() for d in build_project(result.project).diagnostics if d.severity == "error"] == [
+        "POU Chart, chart, output x: error FBD-DANGLING: the output has no input wire"
+    ]
+
+
+def test_a_function_block_box_without_an_instance_is_a_located_error():
+    """CODESYS always writes the instance of a functionblock call; one without is reported, not run as a call of
+    nothing."""
+    box = (
+        '<block localId="1" executionOrderId="1" typeName="TON"><position x="10" y="2" /><inputVariables />'
+        f"<inOutVariables /><outputVariables />{_call('functionblock')}</block>"
+    )
+    text = _document(box)
+    [error] = [d for d in imported(text.encode()).diagnostics if d.severity == "error"]
+    assert (error.code, error.message, error.line, error.element) == (
+        "PLCOPEN-FBD",
+        "box TON names no instance; it was left out",
+        _line(text, "<block"),
+        "localId 1",
+    )
+
+
+def test_two_elements_with_one_number_are_a_located_warning_and_run_top_to_bottom():
+    """x := 1 (drawn above) and x := 2 both numbered 1: a warning at the second; they run top to bottom, so x is 2
+    after a scan."""
+    text = _document(
+        "\n".join([_in(1, "1"), _point(2, 1, "1"), _out(3, 1, 2, "x"), _in(4, "2"), _point(5, 4, "2")])
+        + '<outVariable localId="6" executionOrderId="1"><position x="20" y="9" /><connectionPointIn>'
+        '<connection refLocalId="5" /></connectionPointIn><expression>x</expression></outVariable>',
+        INT.format("x"),
+    )
+    result = imported(text.encode())
+    [warning] = [d for d in result.diagnostics if d.code == "PLCOPEN-FBD"]
+    assert (warning.severity, warning.message, warning.line) == (
+        "warning",
+        "localIds 3 and 6 have the same executionOrderId 1; they run top to bottom, left to right",
+        _line(text, '<outVariable localId="6"'),
+    )
+    sim = build_project(result.project).simulation()
+    sim.cycle(1)
+    assert sim.read("Chart.x") == 2
+
+
+@settings(max_examples=15, deadline=None)
+@given(st.permutations(range(1, 5)))
+def test_the_highest_number_writes_last_whatever_the_drawing_CFC_02(numbers):
+    """Four outputs write v from the literals 10, 20, 30, 40 (drawn top to bottom), numbered by any permutation:
+    after a scan v holds the literal of the highest number, as CODESYS runs the chart in its numbers' order."""
+    parts = []
+    for i, number in enumerate(numbers):
+        base = 10 * i + 1
+        parts += [_in(base, str(10 * (i + 1)), y=3 * i), _point(base + 1, base, "x")]
+        parts.append(_out(base + 2, number, base + 1, "v").replace(f'y="{number * 3}"', f'y="{3 * i}"'))
+    result = imported(_document("\n".join(parts), INT.format("v")).encode())
+    sim = build_project(result.project).simulation()
+    sim.cycle(1)
+    assert sim.read("Chart.v") == 10 * (numbers.index(4) + 1)
