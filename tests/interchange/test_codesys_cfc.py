@@ -183,14 +183,14 @@ def _call(call: str) -> str:
     )
 
 
-def _document(elements: str, variables: str = "") -> str:
+def _document(elements: str, variables: str = "", other_pous: str = "") -> str:
     body = (
         '<body><ST><xhtml xmlns="http://www.w3.org/1999/xhtml" /></ST><addData>'
         '<data name="http://www.3s-software.com/plcopenxml/cfc" handleUnknown="implementation"><CFC>\n'
         f"{elements}\n</CFC></data></addData></body>"
     )
     interface = f"<interface><localVars>{variables}</localVars></interface>"
-    return project_xml(f'<pou name="Chart" pouType="program">{interface}{body}</pou>').decode()
+    return project_xml(f'{other_pous}<pou name="Chart" pouType="program">{interface}{body}</pou>').decode()
 
 
 def _line(text: str, part: str) -> int:
@@ -200,10 +200,10 @@ def _line(text: str, part: str) -> int:
 INT = '<variable name="{}"><type><INT /></type></variable>'
 
 
-def test_a_composer_and_a_method_box_are_located_errors_and_left_out():
-    """A composer (a vendorElement, cfcelementtype composer) and a box calling a method have no place on a LadderLab
-    chart: an error each at the element, naming the POU and the localId; the rest of the chart is read (y := 5),
-    and the output the composer fed is left unwired, which the build reports rather than running it."""
+def test_a_composer_is_a_located_error_and_left_out():
+    """A composer (a vendorElement, cfcelementtype composer) has no place on a LadderLab chart: an error at the
+    element, naming the POU and the localId; the rest of the chart is read (y := 5), and the output the composer fed
+    is left unwired, which the build reports rather than running it."""
     composer = (
         '<vendorElement localId="3" executionOrderId="1"><position x="10" y="2" /><alternativeText>'
         '<xhtml xmlns="http://www.w3.org/1999/xhtml">Point</xhtml></alternativeText><inputVariables>'
@@ -213,10 +213,6 @@ def test_a_composer_and_a_method_box_are_located_errors_and_left_out():
         'software.com/plcopenxml/cfcelementtype" handleUnknown="implementation"><ElementType xmlns="">composer'
         "</ElementType></data></addData></vendorElement>"
     )
-    method = (
-        '<block localId="7" executionOrderId="3" typeName="fb.Reset"><position x="10" y="8" /><inputVariables />'
-        f"<inOutVariables /><outputVariables />{_call('method')}</block>"
-    )
     text = _document(
         "\n".join(
             [
@@ -225,7 +221,6 @@ def test_a_composer_and_a_method_box_are_located_errors_and_left_out():
                 composer,
                 _point(4, 3, "Out1"),
                 _out(5, 2, 4, "x"),
-                method,
                 _in(8, "5", y=12),
                 _point(9, 8, "5"),
                 _out(10, 4, 9, "y"),
@@ -234,21 +229,10 @@ def test_a_composer_and_a_method_box_are_located_errors_and_left_out():
         INT.format("a") + INT.format("x") + INT.format("y"),
     )
     result = imported(text.encode())
-    assert [(d.severity, d.code, d.format()) for d in result.diagnostics if d.severity == "error"] == [
-        (
-            "error",
-            "PLCOPEN-FBD",
-            f"POU Chart line {_line(text, '<vendorElement')}, network chart, element localId 3: error "
-            "PLCOPEN-FBD: the CFC composer has no LadderLab chart element; it was left out (wire the "
-            "structure's members, or a connector and continuation, instead)",
-        ),
-        (
-            "error",
-            "PLCOPEN-FBD",
-            f"POU Chart line {_line(text, '<block')}, network chart, element localId 7: error PLCOPEN-FBD: box "
-            "fb.Reset is a method call, which a LadderLab chart cannot hold (its boxes call functions "
-            "and function blocks); it was left out",
-        ),
+    assert [d.format() for d in result.diagnostics if d.severity == "error"] == [
+        f"POU Chart line {_line(text, '<vendorElement')}, network chart, element localId 3: error PLCOPEN-FBD: the "
+        "CFC composer has no LadderLab chart element; it was left out (wire the structure's members, or a connector "
+        "and continuation, instead)"
     ]
     main = chart(result, "Chart")
     assert sorted(n.var for n in main.nodes if isinstance(n, OutputNode)) == ["x", "y"]
@@ -256,6 +240,54 @@ def test_a_composer_and_a_method_box_are_located_errors_and_left_out():
     assert [d.format() for d in build_project(result.project).diagnostics if d.severity == "error"] == [
         "POU Chart, chart, output x: error FBD-DANGLING: the output has no input wire"
     ]
+
+
+DIVIDER = """<pou name="Divider" pouType="functionBlock"><interface><localVars>{calls}</localVars></interface>
+<body><ST><xhtml xmlns="http://www.w3.org/1999/xhtml" /></ST></body><addData>
+<data name="http://www.3s-software.com/plcopenxml/method" handleUnknown="implementation"><Method name="DivMod">
+<interface><returnType><BOOL /></returnType><inputVars>{a}{b}</inputVars><outputVars>{q}{r}</outputVars></interface>
+<body><ST><xhtml xmlns="http://www.w3.org/1999/xhtml">calls := calls + 1;
+q := a / b;
+r := a MOD b;
+DivMod := r = 0;</xhtml></ST></body><addData /></Method></data></addData></pou>
+"""
+
+
+def test_a_method_box_is_a_call_of_the_instances_method():
+    """CODESYS's box calling the method DivMod of the instance d (CallType method, the instance apart, the result
+    pin named after the method) is LadderLab's box d.DivMod: 12 / 4 gives q 3, r 0, and the result r = 0 TRUE;
+    the method ran once."""
+    box = (
+        '<block localId="5" executionOrderId="1" typeName="DivMod" instanceName="d"><position x="10" y="2" />'
+        '<inputVariables><variable formalParameter="a"><connectionPointIn><connection refLocalId="2" />'
+        '</connectionPointIn></variable><variable formalParameter="b"><connectionPointIn><connection refLocalId="4" />'
+        "</connectionPointIn></variable></inputVariables><inOutVariables /><outputVariables>"
+        + "".join(
+            f'<variable formalParameter="{pin}"><connectionPointOut><expression /></connectionPointOut></variable>'
+            for pin in ("DivMod", "q", "r")
+        )
+        + f"</outputVariables>{_call('method')}</block>"
+    )
+    elements = [_in(1, "n"), _point(2, 1, "n"), _in(3, "4"), _point(4, 3, "4"), box]
+    for order, (pin, var) in enumerate([("DivMod", "even"), ("q", "q"), ("r", "r")], start=2):
+        elements += [_point(10 + order, 5, pin), _out(20 + order, order, 10 + order, var)]
+    variables = (
+        '<variable name="d"><type><derived name="Divider" /></type></variable>'
+        '<variable name="n"><type><INT /></type><initialValue><simpleValue value="12" /></initialValue></variable>'
+        + INT.format("q")
+        + INT.format("r")
+        + '<variable name="even"><type><BOOL /></type></variable>'
+    )
+    divider = DIVIDER.format(**{v: INT.format(v) for v in ("calls", "a", "b", "q", "r")})
+    result = imported(_document("\n".join(elements), variables, divider).encode())
+    assert [d.format() for d in result.diagnostics if d.severity == "error"] == []
+    [block] = [n for n in chart(result, "Chart").nodes if isinstance(n, Block)]
+    assert (block.call, block.instance) == ("d.DivMod", None)
+    built = build_project(result.project)
+    assert [d.format() for d in built.diagnostics if d.severity == "error"] == []
+    sim = built.simulation()
+    sim.cycle(1)
+    assert [sim.read(f"Chart.{v}") for v in ("q", "r", "even", "d.calls")] == [3, 0, True, 1]
 
 
 def test_a_function_block_box_without_an_instance_is_a_located_error():

@@ -10,8 +10,8 @@ are undone here before the FBD importer makes nodes and wires of the elements:
   the source and the unnamed connectors dropped;
 - a box's ``cfccalltype`` addData says how it is called: an ``operator`` (ADD, GT, SEL ...) names its pins
   ``In1``..``Inn`` and ``Out1``, read by position as the callee's inputs and its result ``OUT``; a
-  ``functionblock`` needs its instance; a method call (``inst.M``) and ``vendorElement``s (composer, selector,
-  connection marks: ``cfcelementtype``) have no place on a LadderLab chart and are located errors;
+  ``functionblock`` needs its instance; a ``method`` is LadderLab's box ``inst.M``. ``vendorElement``s
+  (composer, selector, connection marks: ``cfcelementtype``) have no place on a LadderLab chart: located errors;
 - ``executionOrderId`` is the chart's execution order (CFC-02); elements without one (CODESYS's automatic data
   flow mode) run after the numbered ones in data flow order, then top to bottom, left to right, as CODESYS orders
   them in that mode;
@@ -35,8 +35,8 @@ CALLTYPE_DATA = "http://www.3s-software.com/plcopenxml/cfccalltype"
 ELEMENTTYPE_DATA = "http://www.3s-software.com/plcopenxml/cfcelementtype"
 #: Pixels per CODESYS CFC grid unit: the pin pitch of LadderLab's boxes (frontend FbdNodeView PIN_ROW).
 GRID = 22
-#: Call types a LadderLab box can hold (CODESYS writes ``operator`` for ADD, GT, SEL ...).
-_CALLS = ("operator", "function", "functionblock")
+#: CODESYS's call types (``operator`` for ADD, GT, SEL ...; a program box is called like a function block).
+_CALLS = ("operator", "function", "functionblock", "program", "method")
 
 
 def chart_element(data: ET.Element) -> ET.Element | None:
@@ -123,18 +123,21 @@ class CodesysChart:
         for element in [e for e in graph.elements.values() if e.tag == "block"]:
             call = _vendor_text(element.node, self.reader, CALLTYPE_DATA, "CallType")
             type_name = element.node.get("typeName", "")
-            if "." in type_name or (call is not None and call not in _CALLS):
-                self.error(
-                    f"box {type_name} is a {call or 'method'} call, which a LadderLab "
-                    "chart cannot hold (its boxes call functions and function blocks); it was left out",
-                    element,
-                )
-                _remove(graph, element.local_id)
-            elif call == "functionblock" and not element.node.get("instanceName"):
+            if call == "functionblock" and not element.node.get("instanceName"):
                 self.error(f"box {type_name} names no instance; it was left out", element)
                 _remove(graph, element.local_id)
-            elif call == "operator":
+                continue
+            if call == "operator":
                 renamed |= self.operator_pins(element)
+            elif call == "method" or "." in type_name:
+                renamed |= self.method_box(element)
+            elif call not in (None, *_CALLS):
+                self.error(
+                    f"box {type_name} has the call type '{call}', which LadderLab does not know; it is read as a "
+                    f"call of {type_name}",
+                    element,
+                    "warning",
+                )
         for element in graph.elements.values():
             for pin, conns in element.inputs.items():
                 element.inputs[pin] = [
@@ -147,14 +150,23 @@ class CodesysChart:
         sig = self.signatures(element.node.get("typeName", ""))
         names = sig.input_names() if sig is not None else []
         inputs = [p for p in element.in_pins if p.upper() != "EN"]
-        rename = {p: names[i] if i < len(names) else f"IN{i + 1}" for i, p in enumerate(inputs)}
-        element.in_pins = [rename.get(p, p) for p in element.in_pins]
-        element.inputs = {rename.get(p, p): conns for p, conns in element.inputs.items()}
         outputs = [p for p in element.out_pins if p.upper() != "ENO"]
-        out = {p: RESULT_PIN for p in outputs[:1]}
-        element.out_pins = [out.get(p, p) for p in element.out_pins]
-        element.mods = {rename.get(p, out.get(p, p)): m for p, m in element.mods.items()}
-        return {(element.local_id, p): name for p, name in out.items()}
+        return _rename_pins(
+            element,
+            {p: names[i] if i < len(names) else f"IN{i + 1}" for i, p in enumerate(inputs)},
+            {p: RESULT_PIN for p in outputs[:1]},
+        )
+
+    def method_box(self, element: Element) -> dict[tuple[int, str], str]:
+        """A method call is LadderLab's box ``inst.M`` (docs/diagrams.md): the instance joins the call when CODESYS
+        writes it apart, and a result pin named after the method is ``OUT``."""
+        node = element.node
+        call = node.get("typeName", "")
+        if "." not in call and node.get("instanceName"):
+            call = f"{node.attrib.pop('instanceName')}.{call}"
+        node.set("typeName", call)
+        method = call.rsplit(".", 1)[-1].upper()
+        return _rename_pins(element, {}, {p: RESULT_PIN for p in element.out_pins if p.upper() == method})
 
     # ------------------------------------------------------------ execution order
 
@@ -171,6 +183,15 @@ class CodesysChart:
                     "warning",
                 )
         return [e.local_id for e in numbered]
+
+
+def _rename_pins(element: Element, inputs: dict[str, str], outputs: dict[str, str]) -> dict[tuple[int, str], str]:
+    """Rename a box's pins; returns the renamed outputs by (localId, old name), for the connections naming them."""
+    element.in_pins = [inputs.get(p, p) for p in element.in_pins]
+    element.inputs = {inputs.get(p, p): conns for p, conns in element.inputs.items()}
+    element.out_pins = [outputs.get(p, p) for p in element.out_pins]
+    element.mods = {inputs.get(p, outputs.get(p, p)): m for p, m in element.mods.items()}
+    return {(element.local_id, p): name for p, name in outputs.items()}
 
 
 def _remove(graph: Graph, local_id: int) -> None:
