@@ -342,3 +342,42 @@ def test_the_highest_number_writes_last_whatever_the_drawing_CFC_02(numbers):
     sim = build_project(result.project).simulation()
     sim.cycle(1)
     assert sim.read("Chart.v") == 10 * (numbers.index(4) + 1)
+
+
+def test_a_connector_and_its_continuation_and_a_return_are_kept():
+    """A named connector C1 fed with 7 and its continuation feeding y stay a connector and a continuation (unlike
+    the unnamed wire points); the return numbered 2, fed by stop (TRUE), ends the scan before z := 9 (number 3):
+    after a scan y is 7 and z still 0."""
+    elements = [
+        _in(1, "7"),
+        _point(2, 1, "7"),
+        '<connector localId="3" name="C1"><position x="8" y="2" /><connectionPointIn><connection refLocalId="2" />'
+        "</connectionPointIn></connector>",
+        '<continuation localId="4" name="C1"><position x="12" y="6" /><connectionPointOut><expression />'
+        "</connectionPointOut></continuation>",
+        _point(5, 4, "C1"),
+        _out(6, 1, 5, "y"),
+        _in(7, "stop", y=9),
+        _point(8, 7, "stop"),
+        '<return localId="9" executionOrderId="2"><position x="12" y="9" /><connectionPointIn>'
+        '<connection refLocalId="8" /></connectionPointIn></return>',
+        _in(10, "9", y=12),
+        _point(11, 10, "9"),
+        _out(12, 3, 11, "z"),
+    ]
+    variables = (
+        INT.format("y") + INT.format("z") + '<variable name="stop"><type><BOOL /></type><initialValue>'
+        '<simpleValue value="TRUE" /></initialValue></variable>'
+    )
+    result = imported(_document("\n".join(elements), variables).encode())
+    assert [d.format() for d in result.diagnostics if d.severity != "warning"] == []
+    main = chart(result, "Chart")
+    assert [(n.type, getattr(n, "name", None)) for n in main.nodes if n.type in ("connector", "continuation")] == [
+        ("connector", "C1"),
+        ("continuation", "C1"),
+    ]
+    built = build_project(result.project)
+    assert [d.format() for d in built.diagnostics if d.severity == "error"] == []
+    sim = built.simulation()
+    sim.cycle(1)
+    assert (sim.read("Chart.y"), sim.read("Chart.z")) == (7, 0)
