@@ -381,3 +381,43 @@ def test_a_connector_and_its_continuation_and_a_return_are_kept():
     sim = built.simulation()
     sim.cycle(1)
     assert (sim.read("Chart.y"), sim.read("Chart.z")) == (7, 0)
+
+
+SCALER = """<pou name="FB_SUM" pouType="functionBlock"><interface><inputVars>{raw}{gain}</inputVars>
+<inOutVars>{mem}</inOutVars><outputVars>{out}</outputVars></interface>
+<body><ST><xhtml xmlns="http://www.w3.org/1999/xhtml">mem := mem + raw;
+out := mem * 2;</xhtml></ST></body></pou>
+"""
+
+
+def test_localid_0_unwired_inputs_and_an_in_out_pin_as_codesys_v35_sp19_writes_them():
+    """PRG_CFC_3FB.xml (CODESYS V3.5 SP19 Patch 1) numbers a box localId 0, lists its unwired inputs without a
+    connection and wires an in-out pin through a wire point. FB_SUM adds raw (5) to its in-out mem (total) and
+    outputs mem * 2; gain stays unwired: total 5, y 10 after one scan, total 10, y 20 after two."""
+    box = (
+        '<block localId="0" executionOrderId="1" typeName="FB_SUM" instanceName="sum"><position x="16" y="9" />'
+        '<inputVariables><variable formalParameter="raw"><connectionPointIn><relPosition x="0" y="0" />'
+        '<connection refLocalId="2" /></connectionPointIn></variable><variable formalParameter="gain">'
+        '<connectionPointIn><relPosition x="0" y="1" /></connectionPointIn></variable></inputVariables>'
+        '<inOutVariables><variable formalParameter="mem"><connectionPointIn><relPosition x="0" y="2" />'
+        '<connection refLocalId="4" /></connectionPointIn><connectionPointOut><expression /></connectionPointOut>'
+        '</variable></inOutVariables><outputVariables><variable formalParameter="out"><connectionPointOut>'
+        f'<relPosition x="0" y="0" /><expression /></connectionPointOut></variable></outputVariables>{_call("functionblock")}'
+        "</block>"
+    )
+    elements = [_in(1, "5"), _point(2, 1, "5"), _in(3, "total"), _point(4, 3, "total"), box]
+    elements += [_point(5, 0, "out"), _out(6, 2, 5, "y")]
+    variables = '<variable name="sum"><type><derived name="FB_SUM" /></type></variable>' + "".join(
+        INT.format(v) for v in ("total", "y")
+    )
+    scaler = SCALER.format(**{v: INT.format(v) for v in ("raw", "gain", "mem", "out")})
+    result = imported(_document("\n".join(elements), variables, scaler).encode())
+    assert [d.format() for d in result.diagnostics if d.severity != "warning"] == []
+    built = build_project(result.project)
+    assert [d.format() for d in built.diagnostics if d.severity == "error"] == []
+    sim = built.simulation()
+    seen = []
+    for _ in range(2):
+        sim.cycle(1)
+        seen.append((sim.read("Chart.total"), sim.read("Chart.y")))
+    assert seen == [(5, 10), (10, 20)]
