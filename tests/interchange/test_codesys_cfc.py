@@ -421,3 +421,25 @@ def test_localid_0_unwired_inputs_and_an_in_out_pin_as_codesys_v35_sp19_writes_t
         sim.cycle(1)
         seen.append((sim.read("Chart.total"), sim.read("Chart.y")))
     assert seen == [(5, 10), (10, 20)]
+
+
+def test_an_element_type_on_a_tc6_element_is_a_located_warning():
+    """An ElementType LadderLab does not know on an <outVariable> is named in a warning at the element; the
+    element is read as the output it is (x := 3 after a scan)."""
+    marked = _out(3, 1, 2, "x").replace(
+        "</outVariable>",
+        '<addData><data name="http://www.3s-software.com/plcopenxml/cfcelementtype" handleUnknown="implementation">'
+        '<ElementType xmlns="">fancyOutput</ElementType></data></addData></outVariable>',
+    )
+    text = _document("\n".join([_in(1, "3"), _point(2, 1, "3"), marked]), INT.format("x"))
+    result = imported(text.encode())
+    [warning] = [d for d in result.diagnostics if d.code == "PLCOPEN-FBD"]
+    assert (warning.severity, warning.message, warning.line, warning.element) == (
+        "warning",
+        "the CFC element type 'fancyOutput' is not read; this <outVariable> is read as TC6 defines it",
+        _line(text, "<outVariable"),
+        "localId 3",
+    )
+    sim = build_project(result.project).simulation()
+    sim.cycle(1)
+    assert sim.read("Chart.x") == 3

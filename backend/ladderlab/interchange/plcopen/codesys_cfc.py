@@ -86,14 +86,23 @@ class CodesysChart:
     # ------------------------------------------------------------ elements LadderLab has no node for
 
     def refuse_vendor_elements(self, graph: Graph) -> None:
-        for element in [e for e in graph.elements.values() if e.tag == "vendorElement"]:
-            kind = _vendor_text(element.node, self.reader, ELEMENTTYPE_DATA, "ElementType") or "vendor element"
-            self.error(
-                f"the CFC {kind} has no LadderLab chart element; it was left out "
-                "(wire the structure's members, or a connector and continuation, instead)",
-                element,
-            )
-            _remove(graph, element.local_id)
+        """A ``vendorElement`` is left out with an error; an element type on a TC6 element is not read (a
+        warning: the element is read as its tag says)."""
+        for element in list(graph.elements.values()):
+            kind = _vendor_text(element.node, self.reader, ELEMENTTYPE_DATA, "ElementType")
+            if element.tag == "vendorElement":
+                self.error(
+                    f"the CFC {kind or 'vendor element'} has no LadderLab chart element; it was left out "
+                    "(wire the structure's members, or a connector and continuation, instead)",
+                    element,
+                )
+                _remove(graph, element.local_id)
+            elif kind is not None:
+                self.error(
+                    f"the CFC element type '{kind}' is not read; this <{element.tag}> is read as TC6 defines it",
+                    element,
+                    "warning",
+                )
 
     def follow_wire_points(self, graph: Graph) -> None:
         """Connections naming a ``<connector>`` by localId (CODESYS's wire points) name the connector's source;
