@@ -28,6 +28,7 @@ from ladderlab.model.cfc import CfcBody
 from ladderlab.model.fbd import Block, FbdComment, OutputNode, PinFlags, Position
 from ladderlab.simulation.build import build_project
 from tests.interchange.plcopen_helpers import project_xml, xsd_errors
+from tests.interchange.st_support import same_traces
 
 FIXTURE = Path(__file__).parent / "data" / "codesys_cfc.xml"
 EXPECTED_WARNINGS = [
@@ -149,6 +150,13 @@ def test_ladderlabs_export_of_the_imported_charts_is_valid_and_imports_back_the_
     again = import_plcopen(data)
     assert [d.format() for d in again.diagnostics] == []
     assert again.project.pous == project.pous
+
+
+def test_the_imported_charts_export_as_st_that_runs_the_same():
+    """The ST export of the imported charts (jumps as IF around what they skip) gives the same 200-scan traces under
+    the same random writes as the charts."""
+    trace = same_traces(imported().project, scans=200)
+    assert len(trace) == 200
 
 
 # ---------------------------------------------------------------- what a LadderLab chart cannot hold
