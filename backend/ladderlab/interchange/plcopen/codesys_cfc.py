@@ -138,7 +138,7 @@ class CodesysChart:
                 continue
             if call == "operator":
                 renamed |= self.operator_pins(element)
-            elif call == "method" or "." in type_name:
+            elif call == "method" or (call is None and "." in type_name):
                 renamed |= self.method_box(element)
             elif call not in (None, *_CALLS):
                 self.error(
