@@ -451,3 +451,40 @@ def test_an_element_type_on_a_tc6_element_is_a_located_warning():
     sim = build_project(result.project).simulation()
     sim.cycle(1)
     assert sim.read("Chart.x") == 3
+
+
+_ELEMENT = st.sampled_from(["in", "point", "out", "add", "vendor"])
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.lists(st.tuples(_ELEMENT, st.integers(0, 12), st.integers(0, 12)), min_size=1, max_size=12))
+def test_any_wiring_of_wire_points_imports_without_a_traceback(shape):
+    """Wire points naming each other in circles, missing localIds, boxes fed by what was left out: the import
+    always gives a chart whose wires join its own elements, and every problem is a diagnostic at a line of the
+    document."""
+    parts = []
+    for local_id, (kind, ref, other) in enumerate(shape):
+        if kind == "in":
+            parts.append(_in(local_id, "a"))
+        elif kind == "point":
+            parts.append(_point(local_id, ref, "OUT"))
+        elif kind == "out":
+            parts.append(_out(local_id, other + 1, ref, "x"))
+        elif kind == "add":
+            parts.append(
+                f'<block localId="{local_id}" executionOrderId="{other + 1}" typeName="ADD"><position x="1" y="1" />'
+                f'<inputVariables><variable formalParameter="In1"><connectionPointIn><connection refLocalId="{ref}" />'
+                f'</connectionPointIn></variable><variable formalParameter="In2"><connectionPointIn><connection '
+                f'refLocalId="{other}" /></connectionPointIn></variable></inputVariables><inOutVariables />'
+                f'<outputVariables><variable formalParameter="Out1"><connectionPointOut><expression />'
+                f"</connectionPointOut></variable></outputVariables>{_call('operator')}</block>"
+            )
+        else:
+            parts.append(f'<vendorElement localId="{local_id}"><position x="1" y="1" /></vendorElement>')
+    result = import_plcopen(_document("\n".join(parts), INT.format("a") + INT.format("x")).encode())
+    assert result.project is not None
+    main = chart(result, "Chart")
+    ids = {n.id for n in main.nodes}
+    assert all(w.from_.node in ids and w.to.node in ids for w in main.wires)  # no wire to what was left out
+    assert not any(n.type == "connector" for n in main.nodes)  # the unnamed wire points are gone
+    assert all(d.line is not None for d in result.diagnostics if d.code.startswith("PLCOPEN-") and d.pou == "Chart")
