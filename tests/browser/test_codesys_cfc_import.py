@@ -17,6 +17,7 @@ from pathlib import Path
 import pytest
 from playwright.sync_api import expect
 
+from .conftest import ARTIFACTS
 from .steps import go_online, new_project
 from .test_cfc_workflow import badges, cycles
 from .test_faithful_import import import_file
@@ -51,6 +52,7 @@ def test_a_codesys_cfc_export_opens_as_a_chart_and_runs(page, server):
     )
     expect(editor.locator(".fbd-node.fbd-comment")).to_contain_text("Fill by inflow; empty once over the limit")
     expect(editor.locator(".react-flow__edge")).to_have_count(15)
+    page.screenshot(path=str(ARTIFACTS / "codesys-cfc-imported.png"))
 
     go_online(page, run=False)
     cycles(page, 3)
@@ -65,6 +67,7 @@ def test_a_codesys_cfc_export_opens_as_a_chart_and_runs(page, server):
     expect(page.get_by_test_id("value-output2")).to_have_text("TRUE")
     expect(page.get_by_test_id("value-output5")).to_have_text("1")
     expect(page.get_by_test_id("value-output6")).to_have_text("0")
+    page.screenshot(path=str(ARTIFACTS / "codesys-cfc-online.png"))
     cycles(page, 1)
     page.get_by_test_id("value-output1").filter(has_text=re.compile("^3$")).wait_for()
     expect(page.get_by_test_id("value-jump1")).to_have_text("TRUE")

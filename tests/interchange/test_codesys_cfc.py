@@ -21,7 +21,7 @@ from pathlib import Path
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from ladderlab.interchange.plcopen.codesys_cfc import GRID
+from ladderlab.interchange.plcopen.codesys_cfc import GRID_X, GRID_Y
 from ladderlab.interchange.plcopen.exporter import export_plcopen
 from ladderlab.interchange.plcopen.importer import import_plcopen
 from ladderlab.model.cfc import CfcBody
@@ -79,7 +79,7 @@ def test_a_codesys_chart_is_a_cfc_pou_with_its_elements_CFC_01():
 
 def test_call_types_negations_and_places_are_kept():
     """The CTU is the instance pulses (functionblock) with R negated; F_DOUBLE (function) has no instance and its
-    result, written without a pin name, is OUT; notFull is a negated output; places are grid units times GRID
+    result, written without a pin name, is OUT; notFull is a negated output; places are grid units times GRID_X and GRID_Y
     (the ADD at 12, 2)."""
     main = chart(imported(), "PLC_PRG")
     blocks = {n.call: n for n in main.nodes if isinstance(n, Block)}
@@ -88,7 +88,7 @@ def test_call_types_negations_and_places_are_kept():
     assert [w.from_.pin for w in main.wires if w.from_.node == blocks["F_DOUBLE"].id] == ["OUT"]
     outputs = {n.var: n.mode for n in main.nodes if isinstance(n, OutputNode) and n.var != "level"}
     assert outputs == {"full": "normal", "notFull": "negated", "count": "normal", "twice": "normal"}
-    assert blocks["ADD"].pos == Position(x=12 * GRID, y=2 * GRID)
+    assert blocks["ADD"].pos == Position(x=12 * GRID_X, y=2 * GRID_Y)
 
 
 def test_the_execution_order_is_the_executionorderids_CFC_02():

@@ -384,7 +384,7 @@ def test_a_cfc_method_and_a_cfc_pou_are_reported_where_they_are():
     ]
     charted = next(p for p in result.project.pous if p.name == "FB_CHART")
     assert charted.language == "cfc"
-    assert [(n.type, n.expr, n.pos) for n in charted.body.chart.nodes] == [("input", "TRUE", Position(x=440, y=44))]
+    assert [(n.type, n.expr, n.pos) for n in charted.body.chart.nodes] == [("input", "TRUE", Position(x=440, y=72))]
     assert [m.name for m in result.project.pous[0].methods] == ["Toggle", "Bump"]
     assert [d.code for d in result.diagnostics if d.code == "PLCOPEN-ADDDATA"] == ["PLCOPEN-ADDDATA"]  # objectid only
 

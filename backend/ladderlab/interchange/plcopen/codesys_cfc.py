@@ -15,7 +15,8 @@ are undone here before the FBD importer makes nodes and wires of the elements:
 - ``executionOrderId`` is the chart's execution order (CFC-02); elements without one (CODESYS's automatic data
   flow mode) run after the numbered ones in data flow order, then top to bottom, left to right, as CODESYS orders
   them in that mode;
-- positions are CODESYS grid units (one unit between two pins of a box): scaled by ``GRID`` to LadderLab's pixels.
+- positions are CODESYS grid units (one unit between two pins of a box, the height of an input or output element):
+  scaled by ``GRID_X`` and ``GRID_Y`` to LadderLab's pixels, so inputs CODESYS stacks on adjacent rows do not overlap.
 """
 
 from __future__ import annotations
@@ -33,8 +34,10 @@ from .xml_io import Reader, data_entries, local
 
 CALLTYPE_DATA = "http://www.3s-software.com/plcopenxml/cfccalltype"
 ELEMENTTYPE_DATA = "http://www.3s-software.com/plcopenxml/cfcelementtype"
-#: Pixels per CODESYS CFC grid unit: the pin pitch of LadderLab's boxes (frontend FbdNodeView PIN_ROW).
-GRID = 22
+#: Pixels per CODESYS CFC grid unit: across, the pin pitch of LadderLab's boxes (frontend FbdNodeView PIN_ROW);
+#: down, the height of its input and output elements (fbd.css, 34 px) and a gap.
+GRID_X = 22
+GRID_Y = 36
 #: CODESYS's call types (``operator`` for ADD, GT, SEL ...; a program box is called like a function block).
 _CALLS = ("operator", "function", "functionblock", "program", "method")
 
@@ -218,8 +221,11 @@ def _scaled(network: FbdNetwork) -> FbdNetwork:
     for node in network.nodes:
         update: dict[str, object] = {}
         if node.pos is not None:
-            update["pos"] = Position(x=node.pos.x * GRID, y=node.pos.y * GRID)
+            update["pos"] = Position(x=node.pos.x * GRID_X, y=node.pos.y * GRID_Y)
         if isinstance(node, FbdComment):
-            update |= {k: v * GRID for k in ("width", "height") if (v := getattr(node, k)) is not None}
+            if node.width is not None:
+                update["width"] = node.width * GRID_X
+            if node.height is not None:
+                update["height"] = node.height * GRID_Y
         nodes.append(node.model_copy(update=update))
     return network.model_copy(update={"nodes": nodes})
