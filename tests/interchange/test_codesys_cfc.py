@@ -488,3 +488,14 @@ def test_any_wiring_of_wire_points_imports_without_a_traceback(shape):
     assert all(w.from_.node in ids and w.to.node in ids for w in main.wires)  # no wire to what was left out
     assert not any(n.type == "connector" for n in main.nodes)  # the unnamed wire points are gone
     assert all(d.line is not None for d in result.diagnostics if d.code.startswith("PLCOPEN-") and d.pou == "Chart")
+
+
+def test_wire_points_feeding_each_other_are_a_located_error():
+    """Two wire points naming each other (no source) feed x: one error at the wire point where the circle closes;
+    x is unwired, which the build reports."""
+    text = _document("\n".join([_point(1, 2, "OUT"), _point(2, 1, "OUT"), _out(3, 1, 1, "x")]), INT.format("x"))
+    result = imported(text.encode())
+    assert [(d.severity, d.message, d.line) for d in result.diagnostics if d.code == "PLCOPEN-FBD"] == [
+        ("error", "the wire points [1, 2] feed each other; they carry no value", _line(text, '<connector localId="2"'))
+    ]
+    assert [d.code for d in build_project(result.project).diagnostics if d.severity == "error"] == ["FBD-DANGLING"]

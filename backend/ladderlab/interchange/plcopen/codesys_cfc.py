@@ -111,19 +111,22 @@ class CodesysChart:
         """Connections naming a ``<connector>`` by localId (CODESYS's wire points) name the connector's source;
         the unnamed connectors go (a named one stays: its continuations read it)."""
         connectors = {e.local_id: e for e in graph.elements.values() if e.tag == "connector"}
+        circles: set[frozenset[int]] = set()
 
         def sources(conn: Conn, seen: frozenset[int]) -> list[Conn]:
             connector = connectors.get(conn.ref)
             if connector is None:
                 return [conn]
             if conn.ref in seen:
-                self.error(f"the wire points {sorted(seen)} feed each other; the wire was left out", connector)
+                if seen not in circles:
+                    circles.add(seen)
+                    self.error(f"the wire points {sorted(seen)} feed each other; they carry no value", connector)
                 return []
             return [c for inner in connector.inputs.get("", []) for c in sources(inner, seen | {conn.ref})]
 
         for element in graph.elements.values():
             for pin, conns in element.inputs.items():
-                element.inputs[pin] = [c for conn in conns for c in sources(conn, frozenset({element.local_id}))]
+                element.inputs[pin] = [c for conn in conns for c in sources(conn, frozenset())]
         for connector in connectors.values():
             if not connector.node.get("name", "").strip():
                 _remove(graph, connector.local_id)
