@@ -499,3 +499,33 @@ def test_wire_points_feeding_each_other_are_a_located_error():
         ("error", "the wire points [1, 2] feed each other; they carry no value", _line(text, '<connector localId="2"'))
     ]
     assert [d.code for d in build_project(result.project).diagnostics if d.severity == "error"] == ["FBD-DANGLING"]
+
+
+def test_a_negated_input_variable_and_a_negated_box_output_run_negated():
+    """A negated <inVariable> a (FALSE) is NOT a; the AND's inputs NOT a and b (TRUE) give TRUE, its negated
+    output gives FALSE to x; y reads NOT a directly: TRUE."""
+    negated_in = _in(1, "a").replace('<inVariable localId="1">', '<inVariable localId="1" negated="true">')
+    box = (
+        '<block localId="5" executionOrderId="1" typeName="AND"><position x="10" y="2" /><inputVariables>'
+        '<variable formalParameter="In1"><connectionPointIn><connection refLocalId="2" /></connectionPointIn>'
+        '</variable><variable formalParameter="In2"><connectionPointIn><connection refLocalId="4" />'
+        "</connectionPointIn></variable></inputVariables><inOutVariables /><outputVariables>"
+        '<variable formalParameter="Out1" negated="true"><connectionPointOut><expression /></connectionPointOut>'
+        f"</variable></outputVariables>{_call('operator')}</block>"
+    )
+    elements = [negated_in, _point(2, 1, "a"), _in(3, "b"), _point(4, 3, "b"), box, _point(6, 5, "Out1")]
+    elements += [_out(7, 2, 6, "x"), _point(8, 1, "a"), _out(9, 3, 8, "y")]
+    booleans = "".join(f'<variable name="{v}"><type><BOOL /></type></variable>' for v in ("a", "x", "y"))
+    b_true = (
+        '<variable name="b"><type><BOOL /></type><initialValue><simpleValue value="TRUE" /></initialValue></variable>'
+    )
+    result = imported(_document("\n".join(elements), booleans + b_true).encode())
+    main = chart(result, "Chart")
+    assert [n.expr for n in main.nodes if n.type == "input"] == ["NOT a", "b"]
+    [block] = [n for n in main.nodes if isinstance(n, Block)]
+    assert block.pins == {"OUT": PinFlags(negated=True)}
+    built = build_project(result.project)
+    assert [d.format() for d in built.diagnostics if d.severity == "error"] == []
+    sim = built.simulation()
+    sim.cycle(1)
+    assert (sim.read("Chart.x"), sim.read("Chart.y")) == (False, True)
