@@ -4,10 +4,11 @@ What real exports look like was read in public files: MatGros/2026_Projet_YGO_Ex
 ``TOOLS/ST_PLCOPENXML_GENERATOR/samples_reference_codesys/PRG_CFC_3FB.xml`` (an export of CODESYS V3.5 SP19 Patch 1:
 an empty ``<ST>``, the chart in ``.../plcopenxml/cfc``, every wire through an unnamed ``<connector>`` at (0,0)
 whose connection names the source pin, boxes with ``cfccalltype`` ``functionblock``, localId 0, grid positions,
-unwired inputs listed without a connection, in-out pins); the CFC POU template of a TwinCAT scripting project
-(``PouTemplates.CFCPOU``: an ``operator`` box ADD with pins ``In1``/``In3``/``Out1``) and the generators of
-CODESYS CFC XML in mdhl's KNX/MP-bus tools (``mdhl_Knx.h``, ``mdhl_Knx_Items*.h``: comments, ``functionblock`` and
-``operator`` boxes, an operator's result connected with an empty ``formalParameter``). The fixture
+unwired inputs listed without a connection, in-out pins); the CFC POU template of the TwinCAT Automation
+Interface scripting samples (``Scripting.CSharp.PouTemplates.CFCPOU``: an ``operator`` box ADD with pins
+``In1``/``In3``/``Out1``) and SeMdhl/KNX_autogen_9 and SeMdhl/MP-bus_Autogen_4, generators of e!COCKPIT (CODESYS V3)
+CFC imports (``mdhl_Knx.h``, ``mdhl_Knx_Items*.h``: comments, ``functionblock`` and ``operator`` boxes, an
+operator's result connected with an empty ``formalParameter``). The fixture
 tests/interchange/data/codesys_cfc.xml has that structure with LadderLab's own names and logic; the expected values
 are worked out by hand in each docstring. What CODESYS does without execution order numbers (its automatic data
 flow mode: data flow, then top to bottom, left to right) is from the CODESYS online help, "Automatic Execution
