@@ -530,3 +530,17 @@ def test_a_negated_input_variable_and_a_negated_box_output_run_negated():
     sim = built.simulation()
     sim.cycle(1)
     assert (sim.read("Chart.x"), sim.read("Chart.y")) == (False, True)
+
+
+def test_a_chart_entry_without_a_cfc_element_is_a_located_error():
+    """CODESYS's chart entry with something else than <CFC> in it (not seen in any export) is not read as an
+    empty chart silently: an error at the entry, the POU an empty chart."""
+    text = _document("").replace("<CFC>\n\n</CFC>", "<CFCPages />")
+    result = imported(text.encode())
+    [error] = [d for d in result.diagnostics if d.code == "PLCOPEN-UNSUPPORTED"]
+    assert (error.severity, error.message, error.line) == (
+        "error",
+        "POU Chart's CODESYS chart entry holds no <CFC>; the POU was imported as an empty chart",
+        _line(text, '<data name="http://www.3s-software.com/plcopenxml/cfc"'),
+    )
+    assert chart(result, "Chart").nodes == []

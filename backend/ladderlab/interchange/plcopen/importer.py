@@ -415,6 +415,13 @@ class _Importer:
         if tag == "CFC":
             assert language is not None
             cfc = chart_element(language)
+            if cfc is None:
+                r.report(
+                    "PLCOPEN-UNSUPPORTED",
+                    f"POU {pou.name}'s CODESYS chart entry holds no <CFC>; the POU was imported as an empty chart",
+                    language,
+                    pou=pou.name,
+                )
             chart = CodesysChart(r, pou.name, signatures).body(cfc) if cfc is not None else CfcBody()
             return pou.model_copy(update={"language": "cfc", "body": chart})
         if tag in ("ST", "IL"):  # IL bodies are IL text like ST bodies are ST text (docs/il.md)
