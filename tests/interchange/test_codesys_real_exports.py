@@ -19,6 +19,7 @@ import pytest
 from ladderlab.interchange.plcopen.exporter import export_plcopen
 from ladderlab.interchange.plcopen.importer import import_plcopen
 from ladderlab.interchange.plcopen.xml_io import LADDERLAB_DATA
+from ladderlab.model.fbd import Position
 from ladderlab.simulation.build import build_project
 from tests.interchange.plcopen_helpers import xsd_errors
 
@@ -359,8 +360,8 @@ CFC_BODY = """<body>
 def test_a_cfc_method_and_a_cfc_pou_are_reported_where_they_are():
     """CODESYS V3.5 SP21 writes a CFC chart as an empty <ST> with the chart in the body's addData (he-man86/volt,
     packages/volt-cli/test/Volt.Engine.Tests/fixtures/codesys-pou/FB_ChildFolderStructure.plcopen.xml): the method
-    is left out with a warning, the POU's body stays empty with an error (both read as empty ST before, with only
-    the count of dropped addData)."""
+    is left out with a warning (LadderLab's methods are ST); the POU becomes a CFC POU with the chart's input
+    variable (tests/interchange/test_codesys_cfc.py reads whole charts)."""
     method = FBD_METHOD.replace('name="Drawn"', 'name="Charted"').replace(
         FBD_METHOD[FBD_METHOD.index("<body>") : FBD_METHOD.index("</body>") + len("</body>")], CFC_BODY
     )
@@ -374,32 +375,18 @@ def test_a_cfc_method_and_a_cfc_pou_are_reported_where_they_are():
     text = text.replace('<pou name="PLC_PRG"', pou + '<pou name="PLC_PRG"')
     result = import_plcopen(text.encode())
     reported = [(d.severity, d.message, d.line) for d in result.diagnostics if d.code == "PLCOPEN-UNSUPPORTED"]
-    cfc_lines = [
-        text[:at].count("\n") + 1 for at in _find_all(text, '<data name="http://www.3s-software.com/plcopenxml/cfc"')
-    ]
     assert reported == [
         (
             "warning",
             "the method FB_LAMP.Charted is written in CFC; LadderLab's methods and properties are ST, so it was left out",
             text[: text.index('<Method name="Charted">')].count("\n") + 1,
         ),
-        (
-            "error",
-            "POU FB_CHART is a CODESYS CFC chart (in its body's addData), which LadderLab does not read: its body was "
-            "left empty",
-            cfc_lines[1],
-        ),
     ]
+    charted = next(p for p in result.project.pous if p.name == "FB_CHART")
+    assert charted.language == "cfc"
+    assert [(n.type, n.expr, n.pos) for n in charted.body.chart.nodes] == [("input", "TRUE", Position(x=440, y=72))]
     assert [m.name for m in result.project.pous[0].methods] == ["Toggle", "Bump"]
     assert [d.code for d in result.diagnostics if d.code == "PLCOPEN-ADDDATA"] == ["PLCOPEN-ADDDATA"]  # objectid only
-
-
-def _find_all(text: str, part: str) -> list[int]:
-    found, at = [], text.find(part)
-    while at >= 0:
-        found.append(at)
-        at = text.find(part, at + 1)
-    return found
 
 
 def test_an_action_drawn_in_cfc_is_reported_not_imported_empty():

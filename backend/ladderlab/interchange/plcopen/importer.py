@@ -41,6 +41,7 @@ from .body import (
     group_by_ladderlab,
     read_network_list,
 )
+from .codesys_cfc import CALLTYPE_DATA, ELEMENTTYPE_DATA, CodesysChart, chart_element
 from .configuration import MIXED_DATA, read_instances
 from .exporter import diagram_writer
 from .fbd_import import FbdImporter, fbd_groups, place_comments
@@ -88,7 +89,9 @@ BACHMANN = "www.bachmann.at/plc/plcopenxml"
 POU_DATA = "http://www.3s-software.com/plcopenxml/pou"
 DATATYPE_DATA = "http://www.3s-software.com/plcopenxml/datatype"
 _UNDERSTOOD = {
-    (CFC_DATA, "CFC"),  # reported where it is: a POU's or method's body
+    (CFC_DATA, "CFC"),  # a POU's chart (codesys_cfc.py); a method's, action's or transition's is reported
+    (CALLTYPE_DATA, "CallType"),
+    (ELEMENTTYPE_DATA, "ElementType"),  # a vendorElement's: reported where it is
     (POU_DATA, "pou"),
     (DATATYPE_DATA, "dataType"),
     (MIXED_DATA, "MixedAttrsVarList"),
@@ -410,14 +413,17 @@ class _Importer:
         body = bodies[0] if bodies else None
         tag, language = body_language(body, r)
         if tag == "CFC":
-            r.report(
-                "PLCOPEN-UNSUPPORTED",
-                f"POU {pou.name} is a CODESYS CFC chart (in its body's addData), which LadderLab does not read: "
-                "its body was left empty",
-                language,
-                pou=pou.name,
-            )
-            return pou
+            assert language is not None
+            cfc = chart_element(language)
+            if cfc is None:
+                r.report(
+                    "PLCOPEN-UNSUPPORTED",
+                    f"POU {pou.name}'s CODESYS chart entry holds no <CFC>; the POU was imported as an empty chart",
+                    language,
+                    pou=pou.name,
+                )
+            chart = CodesysChart(r, pou.name, signatures).body(cfc) if cfc is not None else CfcBody()
+            return pou.model_copy(update={"language": "cfc", "body": chart})
         if tag in ("ST", "IL"):  # IL bodies are IL text like ST bodies are ST text (docs/il.md)
             return pou.model_copy(update={"body": text_content(language), "language": tag.lower()})
         assert body is not None and language is not None
