@@ -20,6 +20,7 @@ import pytest
 
 from ladderlab.simulation.build import build_project
 from ladderlab.st.project_text import source_to_project
+from ladderlab.st.types import typing_rules
 
 from .ed3_support import program
 
@@ -27,7 +28,8 @@ VARIANTS = ("fast", "debug")
 
 
 def _build(text: str, typing: str = "codesys", variant: str = "fast"):
-    project, diagnostics = source_to_project(text, "codesys")
+    with typing_rules(typing):  # the rules the text is parsed by too (an END_IF without ';')
+        project, diagnostics = source_to_project(text, "codesys")
     assert project is not None and not [d for d in diagnostics if d.severity == "error"], diagnostics
     return build_project(project.model_copy(update={"typing": typing}), variant)
 
@@ -174,6 +176,35 @@ def test_iec_typing_stays_the_default_and_refuses_all_of_it():
         "ST-TYPE-MISMATCH 8",
         "ST-TYPE-MISMATCH 9",
     ]
+
+
+@pytest.mark.parametrize("variant", VARIANTS)
+def test_an_end_keyword_without_semicolon_before_a_statement_only_warns(variant):
+    """CODESYS compiles OSCAT's REAL_TO_FRAC, whose END_IF and END_REPEAT have no ';' before the next statement:
+    under CODESYS typing each is a warning at the keyword's end and the statements run as with the ';' (FOR sums
+    1 + 2 + 3 = 6; IF sets k to 1, CASE 1 makes it 10, WHILE counts to 12, REPEAT to 14). IEC typing keeps ST-40's
+    error."""
+    text = program(
+        "n : INT; i : INT; k : INT; done : BOOL;",
+        """
+FOR i := 1 TO 3 DO n := n + i; END_FOR
+IF n = 6 THEN k := 1; END_IF
+CASE k OF 1: k := 10; END_CASE
+WHILE k < 12 DO k := k + 1; END_WHILE
+REPEAT k := k + 1; UNTIL k >= 14 END_REPEAT
+done := TRUE;""",
+    )
+    assert _scan(text, "n", "k", "done", variant=variant) == [6, 14, True]
+    missing = [
+        "ST-PARSE 7: expected ';' after END_FOR",
+        "ST-PARSE 8: expected ';' after END_IF",
+        "ST-PARSE 9: expected ';' after END_CASE",
+        "ST-PARSE 10: expected ';' after END_WHILE",
+        "ST-PARSE 11: expected ';' after END_REPEAT",
+    ]
+    assert _diagnostics(text, severity="warning") == missing
+    _, refused = source_to_project(text, "iec")
+    assert [f"{d.code} {d.line}: {d.message}" for d in refused if d.severity == "error"] == missing
 
 
 def test_a_bit_string_indexes_an_array_and_selects_a_case_branch():

@@ -80,3 +80,14 @@ def test_the_st_export_names_the_typing_and_reads_back_with_it(tmp_path: Path, c
     path.write_text(export.text, encoding="utf-8")
     assert main(["run", str(path), "--typing", "codesys", "--watch", "Main.b"]) == 0
     assert capsys.readouterr().out.splitlines()[-1].split() == ["0", "10", "44"]
+
+
+def test_the_command_line_parses_a_st_file_by_its_typing(tmp_path: Path, capsys) -> None:
+    """ST-40's ';' after END_IF: a .st file is refused when it is missing before a statement, unless ``--typing
+    codesys`` says to read it as CODESYS does (a warning, and b is 44 as with the ';')."""
+    path = tmp_path / "main.st"
+    path.write_text(SOURCE.replace("b := a + 100;", "IF a > 0 THEN b := 1; END_IF\nb := a + 100;"), encoding="utf-8")
+    assert main(["check", str(path)]) == 2
+    assert capsys.readouterr().err.strip() == "main.st:4:29, POU Main: error ST-PARSE: expected ';' after END_IF"
+    assert main(["run", str(path), "--typing", "codesys", "--watch", "Main.b"]) == 0
+    assert capsys.readouterr().out.splitlines()[-1].split() == ["0", "10", "44"]
