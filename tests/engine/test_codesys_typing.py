@@ -207,6 +207,44 @@ done := TRUE;""",
     assert [f"{d.code} {d.line}: {d.message}" for d in refused if d.severity == "error"] == missing
 
 
+@pytest.mark.parametrize("variant", VARIANTS)
+def test_a_negated_bit_string_is_the_registers_negative_cut_where_it_is_stored(variant):
+    """CODESYS computes ``-b`` (b a BYTE, 1) in its register of at least 32 bits, as ``0 - b``, and cuts it where it
+    is stored ("Operators", example 1: not cut to the operand's width before a wider variable): -1 into an INT input
+    of a function (OSCAT's ``inc(cnt, -step, mx)``: INC1(0, -1, 255) = (0 - 1 + 255 + 1) MOD 256 = 255), 16#FF
+    into a BYTE, 16#FFFF into a WORD, 16#FFFF_FFFF into a DWORD, -1 into a DINT; ``-bb`` with bb = 200 is -200 in an
+    INT and 16#38 = 56 cut to a SINT. ``b1 - b2`` (0 - 1) into a WORD is 16#FFFF the same way. The low 32 bits (or
+    fewer) are the same in a 32- or 64-bit register read signed or unsigned, so every target agrees."""
+    text = (
+        "FUNCTION Inc1 : INT\nVAR_INPUT X : INT; D : INT; M : INT; END_VAR\n"
+        "Inc1 := (X + D + M + 1) MOD (M + 1);\nEND_FUNCTION\n"
+    ) + program(
+        "b : BYTE := 1; bb : BYTE := 200; b1 : BYTE; b2 : BYTE := 1; counted : INT; cut : BYTE; w : WORD; dw : DWORD;"
+        "d : DINT; i : INT; si : SINT; w2 : WORD;",
+        "counted := Inc1(0, -b, 255); cut := -b; w := -b; dw := -b; d := -b; i := -bb; si := -bb; w2 := b1 - b2;",
+    )
+    names = ("counted", "cut", "w", "dw", "d", "i", "si", "w2")
+    assert _scan(text, *names, variant=variant) == [255, 0xFF, 0xFFFF, 0xFFFF_FFFF, -1, -200, 56, 0xFFFF]
+
+
+def test_a_negated_bit_string_compared_or_widened_past_32_bits_is_checked_when_it_runs():
+    """``-b < 0`` is TRUE in a signed register and FALSE in an unsigned one, and ``-b`` into an LWORD is 16#FFFF_FFFF
+    or 16#FFFF_FFFF_FFFF_FFFF by the register's width ("the computational result depends on the target system
+    hardware"): built, with the located fault ``overflow`` when the value is outside BYTE (b = 1), none for b = 0.
+    Under IEC typing a bit string is no number (ST-20)."""
+    for body in ("IF -b < 0 THEN d := 1; END_IF;", "lw := -b;"):
+        text = program("b : BYTE := 1; d : DINT; lw : LWORD;", body)
+        sim = _build(text).simulation()
+        sim.cycle(1)
+        assert sim.fault is not None and sim.fault.code == "overflow"
+        assert sim.fault.message.startswith("'-b' is -1 here, outside BYTE (0..255)")
+        assert (sim.fault.pou, sim.fault.origin.line, sim.read("Main.d"), sim.read("Main.lw")) == ("MAIN", 6, 0, 0)
+        assert _scan(text.replace("b : BYTE := 1", "b : BYTE := 0"), "d", "lw") == [0, 0]
+    assert _diagnostics(program("b : BYTE; i : INT;", "i := -b;"), typing="iec") == [
+        "ST-TYPE-MISMATCH 6: unary '-' needs a number or TIME, not BYTE"
+    ]
+
+
 def test_a_bit_string_indexes_an_array_and_selects_a_case_branch():
     """CODESYS takes a BYTE as an array index and a CASE selector, as its unsigned value: a[b] with b = 3 is the
     element 30, CASE b OF 3: 'three' branch."""

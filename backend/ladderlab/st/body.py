@@ -380,6 +380,8 @@ class BodyChecker:
             return type(operand)(-operand.value if operand.value is not None else None)
         if t.in_family(operand, "ANY_NUM") or t.category(operand) == "time":
             return operand
+        if t.category(operand) == "bits" and t.codesys_typing():  # the unsigned number it holds, negated (registers.py)
+            return operand
         self.report("ST-TYPE-MISMATCH", f"unary '-' needs a number or TIME, not {operand}", node)
         return ERROR
 
