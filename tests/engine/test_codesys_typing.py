@@ -16,6 +16,9 @@ Every expected value comes from CODESYS's documentation, quoted in the test's do
 
 from __future__ import annotations
 
+import math
+import struct
+
 import pytest
 
 from ladderlab.simulation.build import build_project
@@ -242,6 +245,47 @@ def test_a_negated_bit_string_compared_or_widened_past_32_bits_is_checked_when_i
         assert _scan(text.replace("b : BYTE := 1", "b : BYTE := 0"), "d", "lw") == [0, 0]
     assert _diagnostics(program("b : BYTE; i : INT;", "i := -b;"), typing="iec") == [
         "ST-TYPE-MISMATCH 6: unary '-' needs a number or TIME, not BYTE"
+    ]
+
+
+@pytest.mark.parametrize("variant", VARIANTS)
+def test_functions_of_real_take_an_integer_as_an_lreal(variant):
+    """CODESYS "Operator: EXPT": "Permitted data types for the input values: Numeric base data types (SINT, ... INT,
+    ... LWORD)", the return value a REAL or LREAL, ``lrPow := EXPT(iBase, iExponent)`` with 2 and 7 is 128;
+    "Operator: SQRT": "any numeric basic data type" (SQRT(16) is 4). The integer is converted to LREAL (TwinCAT:
+    "return type is always LREAL"; every 32-bit value is exact in it), so ``EXPT(i, 1.5) * 0.836`` with i = 4 is
+    8 * 0.836 computed in LREAL and rounded to the REAL it is stored in (OSCAT's BFT_TO_MS), with a warning; so is
+    ``i ** 2``. IEC typing keeps FUN-33's ANY_REAL base."""
+    text = program(
+        "iBase : INT := 2; iExponent : INT := 7; lrPow : LREAL; i : INT := 4; w : WORD := 16; d : DINT := 16777217;"
+        "root : LREAL; speed : REAL; square : REAL; big : LREAL;",
+        "lrPow := EXPT(iBase, iExponent);\nroot := SQRT(w);\nspeed := EXPT(i, 1.5) * 0.836;\nsquare := i ** 2;"
+        "\nbig := SQRT(d);",
+    )
+    assert _scan(text, "lrPow", "root", "speed", "square", "big", variant=variant) == [
+        128.0,
+        4.0,
+        struct.unpack("<f", struct.pack("<f", 8 * 0.836))[0],
+        16.0,
+        math.sqrt(16777217),
+    ]
+    assert _diagnostics(text, severity="warning") == [
+        "ST-IMPLICIT-CONV 6: EXPT computes in LREAL (CODESYS typing): its INT input is converted implicitly",
+        "ST-IMPLICIT-CONV 7: SQRT computes in LREAL (CODESYS typing): its WORD input is converted implicitly",
+        "ST-IMPLICIT-CONV 8: EXPT computes in LREAL (CODESYS typing): its INT input is converted implicitly",
+        "ST-IMPLICIT-NARROW 8: LREAL is narrowed implicitly to REAL (CODESYS typing): the value is cut as LREAL_TO_REAL "
+        "does; write the conversion to say so",
+        "ST-IMPLICIT-CONV 9: '**' computes in LREAL (CODESYS typing): its INT base is converted implicitly",
+        "ST-IMPLICIT-NARROW 9: LREAL is narrowed implicitly to REAL (CODESYS typing): the value is cut as LREAL_TO_REAL "
+        "does; write the conversion to say so",
+        "ST-IMPLICIT-CONV 10: SQRT computes in LREAL (CODESYS typing): its DINT input is converted implicitly",
+    ]
+    assert _diagnostics(text, typing="iec") == [
+        "ST-TYPE-MISMATCH 6: EXPT works on ANY_REAL, not on INT",
+        "ST-TYPE-MISMATCH 7: SQRT works on ANY_REAL, not on WORD",
+        "ST-TYPE-MISMATCH 8: EXPT works on ANY_REAL, not on INT",
+        "ST-TYPE-MISMATCH 9: the base of '**' must be REAL or LREAL, not INT; convert it (e.g. INT_TO_REAL)",
+        "ST-TYPE-MISMATCH 10: SQRT works on ANY_REAL, not on DINT",
     ]
 
 

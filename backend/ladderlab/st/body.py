@@ -469,6 +469,14 @@ class BodyChecker:
     def _power(self, node: ast.Binary, left: Type, right: Type) -> Type:
         if isinstance(left, t.UntypedInt):
             left = t.UntypedReal(left.value)  # FUN-33: an untyped integer base is promoted
+        if t.real_from_integer(left):
+            self.report(
+                "ST-IMPLICIT-CONV",
+                f"'**' computes in LREAL (CODESYS typing): its {left} base is converted implicitly",
+                node.left,
+                severity="warning",
+            )
+            left = t.LREAL
         if not t.in_family(left, "ANY_REAL"):
             self.report(
                 "ST-TYPE-MISMATCH",
