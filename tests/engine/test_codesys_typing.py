@@ -289,6 +289,28 @@ def test_functions_of_real_take_an_integer_as_an_lreal(variant):
     ]
 
 
+def test_a_project_may_define_multime_and_divtime_under_codesys_typing():
+    """MULTIME and DIVTIME are seed 000's names for MUL_TIME and DIV_TIME (KW-01 reserves them); CODESYS has neither,
+    and OSCAT BASIC defines its own MULTIME ("multiplies a time by a real number"). Under CODESYS typing a project's
+    own function of that name is no redefinition and is what its calls run: OSCAT's body gives MULTIME(T#2s, 1.5) =
+    T#3s, and a DIVTIME of the project's that returns its input untouched gives T#6s for DIVTIME(T#6s, 4), where the
+    standard one gives T#1s500ms (FUN-86). IEC typing keeps them reserved (ST-DUPLICATE)."""
+    functions = (
+        "FUNCTION MULTIME : TIME\nVAR_INPUT t : TIME; M : REAL; END_VAR\n"
+        "MULTIME := DWORD_TO_TIME(REAL_TO_DWORD(DWORD_TO_REAL(TIME_TO_DWORD(t)) * M));\nEND_FUNCTION\n"
+        "FUNCTION DIVTIME : TIME\nVAR_INPUT t : TIME; n : INT; END_VAR\nDIVTIME := t;\nEND_FUNCTION\n"
+    )
+    text = functions + program(
+        "product : TIME; quotient : TIME;", "product := MULTIME(T#2s, 1.5);\nquotient := DIVTIME(T#6s, 4);"
+    )
+    assert _scan(text, "product", "quotient") == [3000, 6000]
+    assert _diagnostics(text, typing="iec") == [
+        "ST-DUPLICATE None: 'MULTIME' is a standard function or function block name and cannot be redefined",
+        "ST-DUPLICATE None: 'DIVTIME' is a standard function or function block name and cannot be redefined",
+    ]
+    assert _scan(program("quotient : TIME;", "quotient := DIVTIME(T#6s, 4);"), "quotient") == [1500]
+
+
 def test_a_bit_string_indexes_an_array_and_selects_a_case_branch():
     """CODESYS takes a BYTE as an array index and a CASE selector, as its unsigned value: a[b] with b = 3 is the
     element 30, CASE b OF 3: 'three' branch."""
