@@ -16,10 +16,13 @@ Every expected value comes from CODESYS's documentation, quoted in the test's do
 
 from __future__ import annotations
 
+import functools
 import math
 import struct
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from ladderlab.simulation.build import build_project
 from ladderlab.st.project_text import source_to_project
@@ -210,6 +213,11 @@ done := TRUE;""",
     assert [f"{d.code} {d.line}: {d.message}" for d in refused if d.severity == "error"] == missing
 
 
+#: Targets of at most 32 bits: their bits and whether they are signed.
+_TARGETS = {"BYTE": (8, False), "SINT": (8, True), "WORD": (16, False), "INT": (16, True), "UINT": (16, False)}
+_TARGETS |= {"DWORD": (32, False), "DINT": (32, True), "UDINT": (32, False)}
+
+
 @pytest.mark.parametrize("variant", VARIANTS)
 def test_a_negated_bit_string_is_the_registers_negative_cut_where_it_is_stored(variant):
     """CODESYS computes ``-b`` (b a BYTE, 1) in its register of at least 32 bits, as ``0 - b``, and cuts it where it
@@ -228,6 +236,39 @@ def test_a_negated_bit_string_is_the_registers_negative_cut_where_it_is_stored(v
     )
     names = ("counted", "cut", "w", "dw", "d", "i", "si", "w2")
     assert _scan(text, *names, variant=variant) == [255, 0xFF, 0xFFFF, 0xFFFF_FFFF, -1, -200, 56, 0xFFFF]
+
+
+#: ``-x`` of each narrow unsigned type stored into targets of at most 32 bits (CODESYS typing).
+_NEGATIONS = [(source, target) for source in ("BYTE", "WORD", "USINT", "UINT") for target in _TARGETS]
+
+
+@functools.cache
+def _negations():
+    sources = dict.fromkeys(source for source, _ in _NEGATIONS)
+    declarations = "".join(f"x_{s} : {s};" for s in sources) + "".join(f"n_{s}_{t} : {t};" for s, t in _NEGATIONS)
+    body = "".join(f"n_{s}_{t} := -x_{s};\n" for s, t in _NEGATIONS)
+    result = _build(program(declarations, body))
+    assert [d.format() for d in result.diagnostics if d.severity == "error"] == []
+    return result.simulation()
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.integers(0, 255), st.integers(0, 65535))
+def test_a_negation_cut_to_at_most_32_bits_is_the_twos_complement_of_the_value(small, large):
+    """The property behind the rule above: the register's 0 - x, cut to a target of at most 32 bits, is -x modulo
+    2^bits read as the target reads its bits (the independent reference: two's complement arithmetic in Python),
+    for every BYTE / USINT (0..255) and WORD / UINT (0..65535) value."""
+    sim = _negations()
+    values = {"BYTE": small, "USINT": small, "WORD": large, "UINT": large}
+    for source, value in values.items():
+        sim.write(f"Main.x_{source}", value)
+    sim.cycle(1)
+    assert sim.fault is None, sim.fault.text()
+    for source, target in _NEGATIONS:
+        bits, signed = _TARGETS[target]
+        expected = -values[source] % 2**bits
+        expected -= 2**bits if signed and expected >= 2 ** (bits - 1) else 0
+        assert sim.read(f"Main.n_{source}_{target}") == expected, (source, target)
 
 
 def test_a_negated_bit_string_compared_or_widened_past_32_bits_is_checked_when_it_runs():
