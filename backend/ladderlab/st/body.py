@@ -527,7 +527,7 @@ class BodyChecker:
             if self._names_program(stmt.call):  # ``PRGexample2;`` calls the program (seed 003, CODESYS)
                 stmt.call = ast.Call(stmt.call, [], stmt.call.span)
             if isinstance(stmt.call, ast.Call):
-                self.call(stmt.call, statement=True)
+                stmt.call.ty = self.call(stmt.call, statement=True)  # its generic arguments settle by it (below)
                 ref = stmt.call.ref
                 if isinstance(ref, Symbol) and ref.implicit is not None:
                     self.report(
