@@ -16,10 +16,17 @@ Every expected value comes from CODESYS's documentation, quoted in the test's do
 
 from __future__ import annotations
 
+import functools
+import math
+import struct
+
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from ladderlab.simulation.build import build_project
 from ladderlab.st.project_text import source_to_project
+from ladderlab.st.types import typing_rules
 
 from .ed3_support import program
 
@@ -27,7 +34,8 @@ VARIANTS = ("fast", "debug")
 
 
 def _build(text: str, typing: str = "codesys", variant: str = "fast"):
-    project, diagnostics = source_to_project(text, "codesys")
+    with typing_rules(typing):  # the rules the text is parsed by too (an END_IF without ';')
+        project, diagnostics = source_to_project(text, "codesys")
     assert project is not None and not [d for d in diagnostics if d.severity == "error"], diagnostics
     return build_project(project.model_copy(update={"typing": typing}), variant)
 
@@ -174,6 +182,174 @@ def test_iec_typing_stays_the_default_and_refuses_all_of_it():
         "ST-TYPE-MISMATCH 8",
         "ST-TYPE-MISMATCH 9",
     ]
+
+
+@pytest.mark.parametrize("variant", VARIANTS)
+def test_an_end_keyword_without_semicolon_before_a_statement_only_warns(variant):
+    """CODESYS compiles OSCAT's REAL_TO_FRAC, whose END_IF and END_REPEAT have no ';' before the next statement:
+    under CODESYS typing each is a warning at the keyword's end and the statements run as with the ';' (FOR sums
+    1 + 2 + 3 = 6; IF sets k to 1, CASE 1 makes it 10, WHILE counts to 12, REPEAT to 14). IEC typing keeps ST-40's
+    error."""
+    text = program(
+        "n : INT; i : INT; k : INT; done : BOOL;",
+        """
+FOR i := 1 TO 3 DO n := n + i; END_FOR
+IF n = 6 THEN k := 1; END_IF
+CASE k OF 1: k := 10; END_CASE
+WHILE k < 12 DO k := k + 1; END_WHILE
+REPEAT k := k + 1; UNTIL k >= 14 END_REPEAT
+done := TRUE;""",
+    )
+    assert _scan(text, "n", "k", "done", variant=variant) == [6, 14, True]
+    missing = [
+        "ST-PARSE 7: expected ';' after END_FOR",
+        "ST-PARSE 8: expected ';' after END_IF",
+        "ST-PARSE 9: expected ';' after END_CASE",
+        "ST-PARSE 10: expected ';' after END_WHILE",
+        "ST-PARSE 11: expected ';' after END_REPEAT",
+    ]
+    assert _diagnostics(text, severity="warning") == missing
+    _, refused = source_to_project(text, "iec")
+    assert [f"{d.code} {d.line}: {d.message}" for d in refused if d.severity == "error"] == missing
+
+
+#: Targets of at most 32 bits: their bits and whether they are signed.
+_TARGETS = {"BYTE": (8, False), "SINT": (8, True), "WORD": (16, False), "INT": (16, True), "UINT": (16, False)}
+_TARGETS |= {"DWORD": (32, False), "DINT": (32, True), "UDINT": (32, False)}
+
+
+@pytest.mark.parametrize("variant", VARIANTS)
+def test_a_negated_bit_string_is_the_registers_negative_cut_where_it_is_stored(variant):
+    """CODESYS computes ``-b`` (b a BYTE, 1) in its register of at least 32 bits, as ``0 - b``, and cuts it where it
+    is stored ("Operators", example 1: not cut to the operand's width before a wider variable): -1 into an INT input
+    of a function (OSCAT's ``inc(cnt, -step, mx)``: INC1(0, -1, 255) = (0 - 1 + 255 + 1) MOD 256 = 255), 16#FF
+    into a BYTE, 16#FFFF into a WORD, 16#FFFF_FFFF into a DWORD, -1 into a DINT; ``-bb`` with bb = 200 is -200 in an
+    INT and 16#38 = 56 cut to a SINT. ``b1 - b2`` (0 - 1) into a WORD is 16#FFFF the same way. The low 32 bits (or
+    fewer) are the same in a 32- or 64-bit register read signed or unsigned, so every target agrees."""
+    text = (
+        "FUNCTION Inc1 : INT\nVAR_INPUT X : INT; D : INT; M : INT; END_VAR\n"
+        "Inc1 := (X + D + M + 1) MOD (M + 1);\nEND_FUNCTION\n"
+    ) + program(
+        "b : BYTE := 1; bb : BYTE := 200; b1 : BYTE; b2 : BYTE := 1; counted : INT; cut : BYTE; w : WORD; dw : DWORD;"
+        "d : DINT; i : INT; si : SINT; w2 : WORD;",
+        "counted := Inc1(0, -b, 255); cut := -b; w := -b; dw := -b; d := -b; i := -bb; si := -bb; w2 := b1 - b2;",
+    )
+    names = ("counted", "cut", "w", "dw", "d", "i", "si", "w2")
+    assert _scan(text, *names, variant=variant) == [255, 0xFF, 0xFFFF, 0xFFFF_FFFF, -1, -200, 56, 0xFFFF]
+
+
+#: ``-x`` of each narrow unsigned type stored into targets of at most 32 bits (CODESYS typing).
+_NEGATIONS = [(source, target) for source in ("BYTE", "WORD", "USINT", "UINT") for target in _TARGETS]
+
+
+@functools.cache
+def _negations():
+    sources = dict.fromkeys(source for source, _ in _NEGATIONS)
+    declarations = "".join(f"x_{s} : {s};" for s in sources) + "".join(f"n_{s}_{t} : {t};" for s, t in _NEGATIONS)
+    body = "".join(f"n_{s}_{t} := -x_{s};\n" for s, t in _NEGATIONS)
+    result = _build(program(declarations, body))
+    assert [d.format() for d in result.diagnostics if d.severity == "error"] == []
+    return result.simulation()
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.integers(0, 255), st.integers(0, 65535))
+def test_a_negation_cut_to_at_most_32_bits_is_the_twos_complement_of_the_value(small, large):
+    """The property behind the rule above: the register's 0 - x, cut to a target of at most 32 bits, is -x modulo
+    2^bits read as the target reads its bits (the independent reference: two's complement arithmetic in Python),
+    for every BYTE / USINT (0..255) and WORD / UINT (0..65535) value."""
+    sim = _negations()
+    values = {"BYTE": small, "USINT": small, "WORD": large, "UINT": large}
+    for source, value in values.items():
+        sim.write(f"Main.x_{source}", value)
+    sim.cycle(1)
+    assert sim.fault is None, sim.fault.text()
+    for source, target in _NEGATIONS:
+        bits, signed = _TARGETS[target]
+        expected = -values[source] % 2**bits
+        expected -= 2**bits if signed and expected >= 2 ** (bits - 1) else 0
+        assert sim.read(f"Main.n_{source}_{target}") == expected, (source, target)
+
+
+def test_a_negated_bit_string_compared_or_widened_past_32_bits_is_checked_when_it_runs():
+    """``-b < 0`` is TRUE in a signed register and FALSE in an unsigned one, and ``-b`` into an LWORD is 16#FFFF_FFFF
+    or 16#FFFF_FFFF_FFFF_FFFF by the register's width ("the computational result depends on the target system
+    hardware"): built, with the located fault ``overflow`` when the value is outside BYTE (b = 1), none for b = 0.
+    Under IEC typing a bit string is no number (ST-20)."""
+    for body in ("IF -b < 0 THEN d := 1; END_IF;", "lw := -b;"):
+        text = program("b : BYTE := 1; d : DINT; lw : LWORD;", body)
+        sim = _build(text).simulation()
+        sim.cycle(1)
+        assert sim.fault is not None and sim.fault.code == "overflow"
+        assert sim.fault.message.startswith("'-b' is -1 here, outside BYTE (0..255)")
+        assert (sim.fault.pou, sim.fault.origin.line, sim.read("Main.d"), sim.read("Main.lw")) == ("MAIN", 6, 0, 0)
+        assert _scan(text.replace("b : BYTE := 1", "b : BYTE := 0"), "d", "lw") == [0, 0]
+    assert _diagnostics(program("b : BYTE; i : INT;", "i := -b;"), typing="iec") == [
+        "ST-TYPE-MISMATCH 6: unary '-' needs a number or TIME, not BYTE"
+    ]
+
+
+@pytest.mark.parametrize("variant", VARIANTS)
+def test_functions_of_real_take_an_integer_as_an_lreal(variant):
+    """CODESYS "Operator: EXPT": "Permitted data types for the input values: Numeric base data types (SINT, ... INT,
+    ... LWORD)", the return value a REAL or LREAL, ``lrPow := EXPT(iBase, iExponent)`` with 2 and 7 is 128;
+    "Operator: SQRT": "any numeric basic data type" (SQRT(16) is 4). The integer is converted to LREAL (TwinCAT:
+    "return type is always LREAL"; every 32-bit value is exact in it), so ``EXPT(i, 1.5) * 0.836`` with i = 4 is
+    8 * 0.836 computed in LREAL and rounded to the REAL it is stored in (OSCAT's BFT_TO_MS), with a warning; so is
+    ``i ** 2``. IEC typing keeps FUN-33's ANY_REAL base."""
+    text = program(
+        "iBase : INT := 2; iExponent : INT := 7; lrPow : LREAL; i : INT := 4; w : WORD := 16; d : DINT := 16777217;"
+        "root : LREAL; speed : REAL; square : REAL; big : LREAL;",
+        "lrPow := EXPT(iBase, iExponent);\nroot := SQRT(w);\nspeed := EXPT(i, 1.5) * 0.836;\nsquare := i ** 2;"
+        "\nbig := SQRT(d);",
+    )
+    assert _scan(text, "lrPow", "root", "speed", "square", "big", variant=variant) == [
+        128.0,
+        4.0,
+        struct.unpack("<f", struct.pack("<f", 8 * 0.836))[0],
+        16.0,
+        math.sqrt(16777217),
+    ]
+    assert _diagnostics(text, severity="warning") == [
+        "ST-IMPLICIT-CONV 6: EXPT computes in LREAL (CODESYS typing): its INT input is converted implicitly",
+        "ST-IMPLICIT-CONV 7: SQRT computes in LREAL (CODESYS typing): its WORD input is converted implicitly",
+        "ST-IMPLICIT-CONV 8: EXPT computes in LREAL (CODESYS typing): its INT input is converted implicitly",
+        "ST-IMPLICIT-NARROW 8: LREAL is narrowed implicitly to REAL (CODESYS typing): the value is cut as LREAL_TO_REAL "
+        "does; write the conversion to say so",
+        "ST-IMPLICIT-CONV 9: '**' computes in LREAL (CODESYS typing): its INT base is converted implicitly",
+        "ST-IMPLICIT-NARROW 9: LREAL is narrowed implicitly to REAL (CODESYS typing): the value is cut as LREAL_TO_REAL "
+        "does; write the conversion to say so",
+        "ST-IMPLICIT-CONV 10: SQRT computes in LREAL (CODESYS typing): its DINT input is converted implicitly",
+    ]
+    assert _diagnostics(text, typing="iec") == [
+        "ST-TYPE-MISMATCH 6: EXPT works on ANY_REAL, not on INT",
+        "ST-TYPE-MISMATCH 7: SQRT works on ANY_REAL, not on WORD",
+        "ST-TYPE-MISMATCH 8: EXPT works on ANY_REAL, not on INT",
+        "ST-TYPE-MISMATCH 9: the base of '**' must be REAL or LREAL, not INT; convert it (e.g. INT_TO_REAL)",
+        "ST-TYPE-MISMATCH 10: SQRT works on ANY_REAL, not on DINT",
+    ]
+
+
+def test_a_project_may_define_multime_and_divtime_under_codesys_typing():
+    """MULTIME and DIVTIME are seed 000's names for MUL_TIME and DIV_TIME (KW-01 reserves them); CODESYS has neither,
+    and OSCAT BASIC defines its own MULTIME ("multiplies a time by a real number"). Under CODESYS typing a project's
+    own function of that name is no redefinition and is what its calls run: OSCAT's body gives MULTIME(T#2s, 1.5) =
+    T#3s, and a DIVTIME of the project's that returns its input untouched gives T#6s for DIVTIME(T#6s, 4), where the
+    standard one gives T#1s500ms (FUN-86). IEC typing keeps them reserved (ST-DUPLICATE)."""
+    functions = (
+        "FUNCTION MULTIME : TIME\nVAR_INPUT t : TIME; M : REAL; END_VAR\n"
+        "MULTIME := DWORD_TO_TIME(REAL_TO_DWORD(DWORD_TO_REAL(TIME_TO_DWORD(t)) * M));\nEND_FUNCTION\n"
+        "FUNCTION DIVTIME : TIME\nVAR_INPUT t : TIME; n : INT; END_VAR\nDIVTIME := t;\nEND_FUNCTION\n"
+    )
+    text = functions + program(
+        "product : TIME; quotient : TIME;", "product := MULTIME(T#2s, 1.5);\nquotient := DIVTIME(T#6s, 4);"
+    )
+    assert _scan(text, "product", "quotient") == [3000, 6000]
+    assert _diagnostics(text, typing="iec") == [
+        "ST-DUPLICATE None: 'MULTIME' is a standard function or function block name and cannot be redefined",
+        "ST-DUPLICATE None: 'DIVTIME' is a standard function or function block name and cannot be redefined",
+    ]
+    assert _scan(program("quotient : TIME;", "quotient := DIVTIME(T#6s, 4);"), "quotient") == [1500]
 
 
 def test_a_bit_string_indexes_an_array_and_selects_a_case_branch():

@@ -97,6 +97,18 @@ def test_constants_fold_exactly_as_the_scan_computes():
     assert (len(sim.read("Main.a")), sim.read("Main.n")) == (4, 4)  # was refused: 10**18 / 3 through a float
 
 
+def test_a_call_statement_settles_its_generic_arguments():
+    """A standard function called as a statement (its result unused) still computes in one type (FUN-02): in
+    ``SEL(i0, c0, MAX(1, 2));`` the literal call MAX(1, 2) takes SEL's INT (c0), as it does in ``x := SEL(...)``; its
+    ENO is TRUE. (It was left untyped and the lowering failed, IR-INTERNAL: the FBD export property test found it.)"""
+    sim, diagnostics = run(
+        "i0 : BOOL; c0 : INT; ok : BOOL; sum_ok : BOOL;",
+        "SEL(G := i0, IN0 := c0, IN1 := MAX(1, 2), ENO => ok);\nADD(EN := TRUE, IN1 := 1, IN2 := 2, ENO => sum_ok);",
+    )
+    assert [d.format() for d in diagnostics if d.severity == "error"] == []
+    assert (sim.read("Main.ok"), sim.read("Main.sum_ok")) == (True, True)
+
+
 def test_a_constant_expression_that_wraps_is_warned_about():
     _, diagnostics = run("x : INT;", "x := 32767 + 1;")
     assert [(d.severity, d.code, d.line, d.column, d.message) for d in diagnostics] == [

@@ -30,7 +30,7 @@ from tests.support import PASS_RATES, external
 #: Floors, IEC typing (the default) and CODESYS typing (Project.typing, docs/st.md "CODESYS typing"). Raise them
 #: when more of OSCAT builds; what still fails is listed by cause in docs/st.md.
 FLOOR_IEC = 324
-FLOOR_CODESYS = 525
+FLOOR_CODESYS = 529
 
 
 @functools.cache
@@ -128,6 +128,19 @@ RUNS = {
     # DIR_TO_DEG: "converts compass directions to degrees" (L = 1: English)
     "DIR_TO_DEG('E', 1)": 90,
     "DIR_TO_DEG('SW', 1)": 225,
+    # REAL_TO_FRAC: "this function calculates the closest fraction for a real number" with a denominator of at most
+    # N (its input "maximale Groesse des Nenners"); the closest fractions: 3/4, -3/4, 1/3 (0.333333, N = 10) and
+    # 355/113 (pi, N = 1000: no fraction with a denominator below 1000 is closer)
+    "REAL_TO_FRAC(0.75, 100)": {"NUMERATOR": 3, "DENOMINATOR": 4},
+    "REAL_TO_FRAC(-0.75, 100)": {"NUMERATOR": -3, "DENOMINATOR": 4},
+    "REAL_TO_FRAC(0.333333, 10)": {"NUMERATOR": 1, "DENOMINATOR": 3},
+    "REAL_TO_FRAC(3.14159265, 1000)": {"NUMERATOR": 355, "DENOMINATOR": 113},
+    # BFT_TO_MS: "converts wind speed from beaufort to m/s", v = 0.836 * B^(3/2) (the WMO's Beaufort formula; EXPT of
+    # the INT B, CODESYS typing): 4 Bft is 0.836 * 8 = 6.688 m/s, 9 Bft 0.836 * 27 = 22.572 m/s, as REALs (binary32)
+    "BFT_TO_MS(4)": struct.unpack("<f", struct.pack("<f", 6.688))[0],
+    "BFT_TO_MS(9)": struct.unpack("<f", struct.pack("<f", 22.572))[0],
+    # MULTIME: "multiplies a time by a real number and returns a time" (OSCAT's own, CODESYS typing: docs/st.md)
+    "MULTIME(T#2s, 1.5)": 3000,
     # The date functions, compared with the date they give (CODESYS's DATE_TO_DWORD counts seconds):
     # SET_DATE "creates a date output from year, month and day of month"
     "SET_DATE(2024, 2, 29) = D#2024-02-29": True,
@@ -144,7 +157,14 @@ ARR = "arr : ARRAY[1..5] OF REAL := [12.0, 0.0, 4.0, 1.0, 7.0];"
 _RESULT_TYPES = {"FACT": "DINT", "FIB": "DINT", "EVEN": "BOOL", "INC1": "INT", "BIT_COUNT": "INT"}
 _RESULT_TYPES |= {"REVERSE": "BYTE", "GCD": "INT", "LEAP_YEAR": "BOOL", "BCDC_TO_INT": "INT"}
 _RESULT_TYPES |= dict.fromkeys(("ARRAY_MAX", "ARRAY_MIN", "ARRAY_SUM", "ARRAY_SPR", "ARRAY_AVG"), "REAL")
-_RESULT_TYPES |= {"BAND_B": "BYTE", "CODE": "BYTE", "FIX": "STRING[250]", "DIR_TO_DEG": "INT"}
+_RESULT_TYPES |= {
+    "BAND_B": "BYTE",
+    "CODE": "BYTE",
+    "FIX": "STRING[250]",
+    "DIR_TO_DEG": "INT",
+    "REAL_TO_FRAC": "FRACTION",
+}
+_RESULT_TYPES |= {"BFT_TO_MS": "REAL", "MULTIME": "TIME"}
 _RESULT_TYPES |= dict.fromkeys(("SET_DATE", "DATE_ADD", "MONTH_BEGIN", "EASTER"), "BOOL")  # compared with a date
 
 
@@ -173,6 +193,34 @@ def test_oscat_functions_run_with_their_documented_results(typing):
         f"\nOSCAT calls run ({typing}): {len(runnable)} / {len(RUNS)}; not built: {sorted(set(RUNS) - set(runnable))}"
     )
     assert results == runnable
-    assert len(runnable) >= (13 if typing == "iec" else 34)
+    assert len(runnable) >= (13 if typing == "iec" else 41)
     assert simulation.read("RunOscat.plc_ms") == (simulation.time_ms if clock else 0)
     assert clock or typing == "iec"
+
+
+def test_oscat_count_br_counts_down_by_its_step_under_codesys_typing():
+    """COUNT_BR: "a byte counter with independent up and dn inputs. the counter counts from 0 to mx and continues at
+    0 after it has reached mx; a step input sets the counters stepping width". It counts down with INC(cnt, -step,
+    mx), INC: "increments the input X by the value D ... if the output exceeds M it will continue to count from 0
+    again" (rev 1.1: "allow for negative increment"), so modulo mx + 1 = 11: from 0 down by 3 on each rising edge of
+    DN gives 8, 5, 2, 10, and up by 3 then 2. The BYTE step is negated in CODESYS's register and passed to INC's INT
+    input as -3 (docs/st.md "CODESYS typing")."""
+    project, built, _ = _oscat("codesys")
+    assert "COUNT_BR" in built
+    program = Pou(
+        name="RunCount",
+        kind="program",
+        language="st",
+        declarations="VAR\ncb : COUNT_BR; up : BOOL; dn : BOOL; cnt : BYTE;\nEND_VAR",
+        body="cb(UP := up, DN := dn, STEP := 3, MX := 10);\ncnt := cb.CNT;",
+    )
+    pous = [p for p in project.pous if p.name.upper() in built] + [program]
+    simulation = build_project(project.model_copy(update={"pous": pous, "tasks": []})).simulation()
+    seen = []
+    for up, dn in [(False, True), (False, False)] * 4 + [(True, False)]:
+        simulation.write("RunCount.up", up)
+        simulation.write("RunCount.dn", dn)
+        simulation.cycle(1)
+        assert simulation.fault is None, simulation.fault.text()
+        seen.append(simulation.read("RunCount.cnt"))
+    assert seen == [8, 8, 5, 5, 2, 2, 10, 10, 2]

@@ -12,6 +12,7 @@ from ladderlab.interchange.plcopen.exporter import export_plcopen
 from ladderlab.interchange.plcopen.importer import import_plcopen
 from ladderlab.interchange.st.project import export_project_st
 from ladderlab.st.project_text import source_to_project
+from ladderlab.st.types import typing_rules
 from ladderlab.storage import load_project_path
 from ladderlab.storage.project_folder import project_files
 
@@ -76,6 +77,32 @@ def test_the_st_export_names_the_typing_and_reads_back_with_it(tmp_path: Path, c
     export = export_project_st(_project())
     assert [d for d in export.diagnostics if d.severity == "error"] == []
     assert export.text.splitlines()[0] == "(* Checked with CODESYS typing: ladderlab check/run ... --typing codesys *)"
+    path = tmp_path / "exported.st"
+    path.write_text(export.text, encoding="utf-8")
+    assert main(["run", str(path), "--typing", "codesys", "--watch", "Main.b"]) == 0
+    assert capsys.readouterr().out.splitlines()[-1].split() == ["0", "10", "44"]
+
+
+def test_the_command_line_parses_a_st_file_by_its_typing(tmp_path: Path, capsys) -> None:
+    """ST-40's ';' after END_IF: a .st file is refused when it is missing before a statement, unless ``--typing
+    codesys`` says to read it as CODESYS does (a warning, and b is 44 as with the ';')."""
+    path = tmp_path / "main.st"
+    path.write_text(SOURCE.replace("b := a + 100;", "IF a > 0 THEN b := 1; END_IF\nb := a + 100;"), encoding="utf-8")
+    assert main(["check", str(path)]) == 2
+    assert capsys.readouterr().err.strip() == "main.st:4:29, POU Main: error ST-PARSE: expected ';' after END_IF"
+    assert main(["run", str(path), "--typing", "codesys", "--watch", "Main.b"]) == 0
+    assert capsys.readouterr().out.splitlines()[-1].split() == ["0", "10", "44"]
+
+
+def test_the_st_export_keeps_an_end_if_without_semicolon_under_codesys_typing(tmp_path: Path, capsys) -> None:
+    """The export writes the body as it is and checks that it reads back by the project's rules: CODESYS's END_IF
+    without ';' before a statement (a warning there) stays, and the file runs with ``--typing codesys`` (b is 44)."""
+    text = SOURCE.replace("b := a + 100;", "IF a > 0 THEN b := 1; END_IF\nb := a + 100;")
+    with typing_rules("codesys"):
+        project, _ = source_to_project(text, "p")
+    export = export_project_st(project.model_copy(update={"typing": "codesys"}))
+    assert [d.format() for d in export.diagnostics if d.severity == "error"] == []
+    assert "IF a > 0 THEN b := 1; END_IF\nb := a + 100;" in export.text
     path = tmp_path / "exported.st"
     path.write_text(export.text, encoding="utf-8")
     assert main(["run", str(path), "--typing", "codesys", "--watch", "Main.b"]) == 0

@@ -13,6 +13,7 @@ import pytest
 
 from ladderlab.st.parser import parse_source, split_units
 from ladderlab.st.printer import print_source
+from ladderlab.st.types import typing_rules
 from tests.support import PASS_RATES, external
 
 IRONPLC_UNSUPPORTED = {
@@ -52,6 +53,26 @@ def test_ironplc_corpus_files():
     failing = {f.name for f in files if not parse_source(f.read_text(encoding="utf-8"), nested_comments=True).ok}
     PASS_RATES["ironplc compiler/resources/test (files)"] = (len(files) - len(failing), len(files))
     assert failing == set(IRONPLC_UNSUPPORTED)
+
+
+def test_what_st40_refuses_in_the_corpora_parses_under_codesys_typing(oscat):
+    """ironplc's if.st and OSCAT's REAL_TO_FRAC have END_IF / END_REPEAT without ';' before another statement: an
+    error by ST-40, a warning each under CODESYS typing (docs/st.md "CODESYS typing")."""
+    text = external("ironplc", "compiler", "resources", "test", "if.st").read_text(encoding="utf-8")
+    with typing_rules("codesys"):
+        result = parse_source(text)
+        oscat_result = parse_source(oscat[0], nested_comments=True)
+    assert [(d.severity, d.message, d.line) for d in result.diagnostics] == [
+        ("warning", "expected ';' after END_IF", 4),
+        ("warning", "expected ';' after END_IF", 7),
+    ]
+    assert oscat_result.ok
+    assert [(d.pou, d.message, d.line) for d in oscat_result.diagnostics if d.pou == "REAL_TO_FRAC"] == [
+        ("REAL_TO_FRAC", "expected ';' after END_IF", 21325),
+        ("REAL_TO_FRAC", "expected ';' after END_IF", 21329),
+        ("REAL_TO_FRAC", "expected ';' after END_REPEAT", 21333),
+        ("REAL_TO_FRAC", "expected ';' after END_IF", 21340),
+    ]
 
 
 def test_ironplc_end_to_end_programs():

@@ -6,6 +6,7 @@ import pytest
 
 from ladderlab.st import ast
 from ladderlab.st.parser import parse_declarations, parse_expression, parse_pou, parse_source, parse_statements
+from ladderlab.st.types import typing_rules
 
 
 def expr(text: str) -> ast.Expr:
@@ -400,6 +401,33 @@ def test_st65_missing_semicolon_after_last_end_if_is_a_warning():
     result = parse_statements("IF a THEN x := 1; END_IF")
     assert [(d.severity, d.message) for d in result.diagnostics] == [("warning", "expected ';' after END_IF")]
     assert result.ok and isinstance(result.ast[0], ast.If)
+
+
+@pytest.mark.parametrize(
+    "block, keyword",
+    [
+        ("IF a THEN x := 1; END_IF", "END_IF"),
+        ("CASE x OF 1: y := 2; END_CASE", "END_CASE"),
+        ("FOR i := 1 TO 3 DO x := i; END_FOR", "END_FOR"),
+        ("WHILE a DO a := FALSE; END_WHILE", "END_WHILE"),
+        ("REPEAT a := FALSE; UNTIL NOT a END_REPEAT", "END_REPEAT"),
+    ],
+)
+@pytest.mark.parametrize("between", ["\n", " "])
+def test_st40_end_keyword_before_a_statement_is_an_error_but_under_codesys_typing_a_warning(block, keyword, between):
+    """ST-40: ``END_IF;`` ... ``END_REPEAT;`` are followed by ``;``. CODESYS accepts them without it before another
+    statement (OSCAT's REAL_TO_FRAC), so under CODESYS typing the ``;`` is inserted with a warning at the keyword's
+    end, as ST-65's last statement of a body; IEC typing keeps the error (on the same line, the unit ends there)."""
+    text = f"{block}{between}y := 5;"
+    expected = [("ST-PARSE", f"expected ';' after {keyword}", 1, len(block) + 1, "Main/body", "Main")]
+    iec = parse_statements(text, file="Main/body", pou="Main")
+    assert [(d.code, d.message, d.line, d.column, d.file, d.pou) for d in iec.diagnostics] == expected
+    assert [d.severity for d in iec.diagnostics] == ["error"]
+    with typing_rules("codesys"):
+        codesys = parse_statements(text, file="Main/body", pou="Main")
+    assert [(d.code, d.message, d.line, d.column, d.file, d.pou) for d in codesys.diagnostics] == expected
+    assert [d.severity for d in codesys.diagnostics] == ["warning"]
+    assert codesys.ast == stmts(f"{block};{between}y := 5;")
 
 
 def test_missing_semicolon_in_declarations():

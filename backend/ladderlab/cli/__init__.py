@@ -245,8 +245,13 @@ def _parser() -> argparse.ArgumentParser:
 
 
 def _load(args: argparse.Namespace) -> Project:
-    """The PROJECT argument, its files read in ``--encoding``, with the ``--library`` options."""
-    return using_libraries(load_project_path(args.project, encoding_of(args)), args)
+    """The PROJECT argument, its files read in ``--encoding``, with the ``--library`` options. A .st file is parsed
+    under the ``--typing`` rules (CODESYS's ``END_IF`` without ``;`` before a statement only warns)."""
+    from ..st.types import typing_rules
+
+    with typing_rules(getattr(args, "typing", None) or "iec"):
+        project = load_project_path(args.project, encoding_of(args))
+    return using_libraries(project, args)
 
 
 def _check(args: argparse.Namespace) -> int:

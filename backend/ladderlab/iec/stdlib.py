@@ -483,6 +483,9 @@ FUNCTION_BLOCKS: dict[str, StdFunctionBlock] = {fb.name: fb for fb in _function_
 #: Vendor system functions (not IEC's) a project may define itself: its own POU of that name is called instead
 #: (IronPLC's ``allow_time_as_function_name``: a user ``FUNCTION TIME``).
 REDEFINABLE = frozenset({"TIME"})
+#: Seed 000's names for MUL_TIME and DIV_TIME (IEC 61131-3 ed. 3 has only those), which CODESYS does not have: under
+#: CODESYS typing a project may define them as well (OSCAT BASIC's MULTIME, "multiplies a time by a real number").
+CODESYS_REDEFINABLE = frozenset({"MULTIME", "DIVTIME"})
 
 
 def function(name: str) -> StdFunction | None:

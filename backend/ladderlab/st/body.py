@@ -380,6 +380,8 @@ class BodyChecker:
             return type(operand)(-operand.value if operand.value is not None else None)
         if t.in_family(operand, "ANY_NUM") or t.category(operand) == "time":
             return operand
+        if t.category(operand) == "bits" and t.codesys_typing():  # the unsigned number it holds, negated (registers.py)
+            return operand
         self.report("ST-TYPE-MISMATCH", f"unary '-' needs a number or TIME, not {operand}", node)
         return ERROR
 
@@ -467,6 +469,14 @@ class BodyChecker:
     def _power(self, node: ast.Binary, left: Type, right: Type) -> Type:
         if isinstance(left, t.UntypedInt):
             left = t.UntypedReal(left.value)  # FUN-33: an untyped integer base is promoted
+        if t.real_from_integer(left):
+            self.report(
+                "ST-IMPLICIT-CONV",
+                f"'**' computes in LREAL (CODESYS typing): its {left} base is converted implicitly",
+                node.left,
+                severity="warning",
+            )
+            left = t.LREAL
         if not t.in_family(left, "ANY_REAL"):
             self.report(
                 "ST-TYPE-MISMATCH",
@@ -517,7 +527,7 @@ class BodyChecker:
             if self._names_program(stmt.call):  # ``PRGexample2;`` calls the program (seed 003, CODESYS)
                 stmt.call = ast.Call(stmt.call, [], stmt.call.span)
             if isinstance(stmt.call, ast.Call):
-                self.call(stmt.call, statement=True)
+                stmt.call.ty = self.call(stmt.call, statement=True)  # its generic arguments settle by it (below)
                 ref = stmt.call.ref
                 if isinstance(ref, Symbol) and ref.implicit is not None:
                     self.report(

@@ -449,6 +449,14 @@ def _generic_type(checker: Any, node: ast.Call, function: stdlib.StdFunction, bo
     if shared is None:
         return ERROR if generic_pins and function.result == stdlib.T else t.VOID
     family = generic_pins[0].type
+    if family == "ANY_REAL" and t.real_from_integer(shared):
+        checker.report(
+            "ST-IMPLICIT-CONV",
+            f"{function.name} computes in LREAL (CODESYS typing): its {shared} input is converted implicitly",
+            node,
+            severity="warning",
+        )
+        shared = t.LREAL
     if not t.in_family(shared, family) and not _codesys_shift(function, shared):
         checker.report("ST-TYPE-MISMATCH", f"{function.name} works on {family}, not on {shared}", node)
         return ERROR

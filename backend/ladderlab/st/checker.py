@@ -165,7 +165,7 @@ class ProjectChecker:
             if upper in self.result.pous:
                 where("ST-DUPLICATE", f"there is already a POU called '{pou.name}'", None)
                 continue
-            if (stdlib.function(upper) or stdlib.function_block(upper)) and upper not in stdlib.REDEFINABLE:
+            if (stdlib.function(upper) or stdlib.function_block(upper)) and not _redefinable(upper):
                 where(
                     "ST-DUPLICATE",
                     f"'{pou.name}' is a standard function or function block name and cannot be redefined",
@@ -609,6 +609,11 @@ def _pack(decl: ast.TypeDecl, resolved: Type, report: Reporter) -> None:
         )
     else:
         resolved.pack_mode = _PACK_MODES[decl.pack_mode]
+
+
+def _redefinable(name: str) -> bool:
+    """Whether a project's own POU may be named like this standard function (and is called instead of it)."""
+    return name in stdlib.REDEFINABLE or (t.codesys_typing() and name in stdlib.CODESYS_REDEFINABLE)
 
 
 def _elementary_decl(decl: ast.VarDecl) -> bool:

@@ -32,6 +32,7 @@ from .pragmas import attach_pack_modes, misplaced_pack_modes
 from .quick_decls import DEPTH as QUICK_DEPTH
 from .quick_decls import quick_declarations
 from .transformer import AstBuilder, StSyntaxError
+from .types import codesys_typing
 
 GRAMMAR = pathlib.Path(__file__).with_name("iec61131.lark")
 _STARTS = ["start_source", "start_pou", "start_decls", "start_stmts", "start_expr", "start_type", "start_config_blocks"]
@@ -353,9 +354,10 @@ class _Reporter:
         if "SEMI" not in error.accepts or previous is None:
             return False
         at_end = error.token.type == "$END"
-        # ST-40 wants the ';' after END_x; ST-65 tolerates it missing on the last statement of a body.
+        # ST-40 wants the ';' after END_x; ST-65 tolerates it missing on the last statement of a body, and CODESYS
+        # before any statement (OSCAT's REAL_TO_FRAC): under CODESYS typing that only warns too.
         lenient = previous.type.lstrip("_") in _END_KEYWORDS and (
-            at_end or error.token.type.lstrip("_").startswith("END_")
+            at_end or error.token.type.lstrip("_").startswith("END_") or codesys_typing()
         )
         if not lenient and (at_end or previous.end_line >= error.token.line):
             return False

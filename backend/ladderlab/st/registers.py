@@ -10,14 +10,17 @@ INT); this pass, run on a checked body, finds where that would give another valu
   converted with ``TO_WORD`` or ``DINT_TO_WORD`` (example 4), or an operand of another ``+ - *`` so cut;
 * anywhere else (a comparison, a division, an index, a REAL, a wider variable) a signed operation narrower than 32
   bits, and an unsigned ``+``, compute in DINT instead, as the 32-bit register does (their node's type becomes DINT;
-  an unsigned ``+`` of two 16-bit values never leaves DINT); a division, MOD or negation of such a value too;
-* where the register's value is target dependent (an unsigned ``-`` or ``*``: the register's sign) or its user would
-  give a target's result for it (a typed conversion ``INT_TO_REAL`` of a promoted value: converted before or after
-  the cut?; SHR; a FOR loop's end or step), the operation computes in DINT and is wrapped in ``ast.Fit``: its value
-  must lie in the operation's own type, where the cut changes nothing and every target gives the same result; the
-  run faults, located, when it does not (``INT_TO_DWORD(pos - 1)`` for any pos but -32768). A user that gives
-  another result for the same value in a wider register (a bitwise operation, NOT, another shift or function of a
-  promoted value) is refused with ST-CODESYS-REGISTER, located at the operation. MIN, MAX, LIMIT, SEL, MUX and MOVE
+  an unsigned ``+`` of two 16-bit values never leaves DINT); a division, MOD or negation of such a value too; a
+  negation ``-x`` of a narrow ``x`` is the register's ``0 - x``; an unsigned ``-`` or ``*`` cut to at most 32 bits
+  (into a WORD or DINT variable, an INT input) too: those bits are the same in every register;
+* where the register's value is target dependent (an unsigned ``-`` or ``*`` used uncut or cut to more than 32 bits:
+  the register's sign and width) or its user would give a target's result for it (a typed conversion
+  ``INT_TO_REAL`` of a promoted value: converted before or after the cut?; SHR; a FOR loop's end or step), the
+  operation computes in DINT and is wrapped in ``ast.Fit``: its value must lie in the operation's own type, where the
+  cut changes nothing and every target gives the same result; the run faults, located, when it does not
+  (``INT_TO_DWORD(pos - 1)`` for any pos but -32768). A user that gives another result for the same value in a wider
+  register (a bitwise operation, NOT, another shift or function of a promoted value) is refused with
+  ST-CODESYS-REGISTER, located at the operation. MIN, MAX, LIMIT, SEL, MUX and MOVE
   of a promoted value give one of their inputs: they compute in DINT too.
 
 Operations of 32 bits wrap in 32 bits, as on a 32-bit target (x86, ARM); CODESYS on x64 computes them in 64 bits and
@@ -112,6 +115,8 @@ class _Walker:
             return self.binary(node, cut)
         if isinstance(node, ast.Unary):
             width = _width(node.ty)
+            if node.op == "-" and _narrow(node):  # the register's 0 - x
+                return self.modular(node, cut, width, ("operand",))
             inner = min(cut, width) if cut is not None and width is not None else None
             if self.operand(node, "operand", inner):
                 return self._promote(node) if node.op == "-" else self._refuse(node, "NOT of")
@@ -128,17 +133,8 @@ class _Walker:
 
     def binary(self, node: ast.Binary, cut: int | None) -> bool | str:
         width = _width(node.ty)
-        narrow = width is not None and width < REGISTER_BITS and not isinstance(node.ty, t.UNTYPED)
-        if node.op in _MODULAR and narrow and cut is not None and cut <= width:
-            self.operand(node, "left", width)  # cut: exact modulo 2^width, operands promoted or not
-            self.operand(node, "right", width)
-            return False
-        if node.op in _MODULAR and narrow and not _literal_only(node):
-            self.operand(node, "left", None)
-            self.operand(node, "right", None)
-            register_sign_decides = not node.ty.info.signed and node.op != "+"
-            self._promote(node)
-            return FIT if register_sign_decides else True
+        if node.op in _MODULAR and _narrow(node) and ((cut is not None and cut <= width) or not _literal_only(node)):
+            return self.modular(node, cut, width, ("left", "right"))
         if node.op in ("=", "<>"):
             return self.equality(node)
         inner = min(cut, width) if node.op in _BITWISE and cut is not None and width is not None else None
@@ -148,6 +144,22 @@ class _Walker:
         if node.op in ("/", "MOD", "+", "-", "*"):
             return self._promote(node)
         return self._refuse(node, f"'{node.op}' on")
+
+    def modular(self, node: Any, cut: int | None, width: int, operands: tuple[str, ...]) -> bool | str:
+        """A ``+ - *`` or a negation narrower than the register. Cut to its width (or less): exact modulo 2^width,
+        operands promoted or not. Else it computes in DINT as the register does; an unsigned ``-`` or ``*`` (the
+        negation too) is below 0 or above the type in a register read signed or unsigned, 32 or 64 bits wide, so it is
+        a FIT unless its value is cut to at most 32 bits (a DINT, an INT input): those bits are the same in every
+        such register (``inc(cnt, -step, mx)`` with a BYTE step passes -step to the INT input)."""
+        if cut is not None and cut <= width:
+            for key in operands:
+                self.operand(node, key, width)
+            return False
+        for key in operands:
+            self.operand(node, key, None)
+        register_sign_decides = not node.ty.info.signed and node.op != "+" and (cut is None or cut > REGISTER_BITS)
+        self._promote(node)
+        return FIT if register_sign_decides else True
 
     def equality(self, node: ast.Binary) -> bool:
         """``(w2 - 1) = w1`` on unsigned narrow operands is FALSE on every target (CODESYS "Operators", example 2):
@@ -246,6 +258,12 @@ def _any_integer(callee: Any, position: int, arg: ast.Arg) -> bool:
     name = arg.name if arg.name is not None else callee.input_name(position)
     pin = callee.pin(name) if name is not None else None
     return pin is not None and not pin.generic and pin.type == "ANY_INT"
+
+
+def _narrow(node: Any) -> bool:
+    """Whether ``node`` is an integer or bit-string operation narrower than the register (not of literals only)."""
+    width = _width(node.ty)
+    return width is not None and width < REGISTER_BITS and not isinstance(node.ty, t.UNTYPED)
 
 
 def _unsigned_subtraction(node: Any) -> bool:

@@ -261,6 +261,14 @@ def codesys_typing() -> bool:
     return _TYPING.get() == "codesys"
 
 
+def real_from_integer(value: Type) -> bool:
+    """Whether ``value`` is an integer or bit string that CODESYS typing gives where a REAL or LREAL is computed (SQRT,
+    EXPT's base, ``**``: CODESYS takes "any numeric basic data type" there and returns a REAL or LREAL). It is
+    converted to LREAL, which holds every 32-bit value exactly, as TwinCAT documents for EXPT ("return type is always
+    LREAL")."""
+    return codesys_typing() and isinstance(value, Elementary) and value.category in ("int", "bits")
+
+
 def _widens(source: Elementary, target: Elementary) -> bool:
     return _widens_name(source.name, target.name, codesys_typing())
 

@@ -21,6 +21,7 @@ from ...model import Configuration, Diagnostic, ProgramInstance, Project, Resour
 from ...st.checker import check_project
 from ...st.printer import INDENT
 from ...st.project_text import source_to_project
+from ...st.types import typing_rules
 from ...storage.st_text import compose_pou_text
 from .export import StExport, st_pou, textual_sfc
 from .names import Names
@@ -77,7 +78,8 @@ def export_project_st(project: Project, *, sfc_text: bool = False) -> StExport:
 def verify_text(text: str, project: Project) -> list[Diagnostic]:
     """The exported file must read back into a project (with the same vendor libraries and type rules, which the
     text names in a comment) that checks without errors; else say so."""
-    read, diagnostics = source_to_project(text, project.name)
+    with typing_rules(project.typing):  # parsed as checked: CODESYS's END_IF without ';' before a statement
+        read, diagnostics = source_to_project(text, project.name)
     if read is not None:
         read = read.model_copy(update={"libraries": project.libraries, "typing": project.typing})
         diagnostics = diagnostics + check_project(read).diagnostics
