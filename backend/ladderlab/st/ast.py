@@ -402,7 +402,16 @@ class StructType:
     span: Span = _span()
 
 
-TypeSpec = NamedType | SizedType | SubrangeType | ArrayType | PointerType | EnumType | StructType
+@dataclass(slots=True)
+class InstanceArgsType:
+    """CODESYS: ``F[(n := 1), (n := 2)]``, an array's element type with each element's FB_init arguments."""
+
+    name: str
+    elements: list[StructInit]
+    span: Span = _span()
+
+
+TypeSpec = NamedType | SizedType | SubrangeType | ArrayType | PointerType | EnumType | StructType | InstanceArgsType
 
 
 @dataclass(slots=True)

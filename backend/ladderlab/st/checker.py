@@ -25,6 +25,7 @@ from .il_check import check_il_body
 from .il_parser import IlBody, parse_il
 from .inheritance import abstract_instance, check_overrides, link_bases
 from .interfaces import check_implementations, declare_interfaces, link_implements, register_interfaces
+from .fb_init import check_fb_init_methods, check_instance_args, instance_spec
 from .libraries import with_libraries
 from .methods import check_method_body, check_method_recursion, declare_methods
 from .parser import (
@@ -81,6 +82,8 @@ class ProjectChecker:
         self.result = CheckResult()
         self.type_decls: dict[str, ast.TypeDecl] = {}
         self._resolving: set[str] = set()
+        #: declared instances with FB_init arguments, checked once every method is declared (st/fb_init.py)
+        self._written_args: list[tuple[Symbol, list, Any, BodyChecker, PouInfo | None]] = []
 
     # ------------------------------------------------------------ driver
     def run(self) -> CheckResult:
@@ -129,8 +132,20 @@ class ProjectChecker:
         blocks = [info for info in self.result.pous.values() if info.kind == "FUNCTION_BLOCK"]
         check_overrides(self, blocks)
         check_implementations(self, blocks)
+        check_fb_init_methods(self, blocks)
         for pou in self.project.pous:
             self._check_initial_values(pou)
+        for symbol, written, at, checker, owner in self._written_args:  # once the FB_init methods are declared
+            if (owner is not None and owner.kind == "FUNCTION") or symbol.var_class in ("VAR_IN_OUT", "VAR_EXTERNAL"):
+                where = f"{article(symbol.var_class)}" if owner is None or owner.kind != "FUNCTION" else "a call's variable"
+                checker.report(
+                    "ST-DECL",
+                    "FB_init arguments belong where an instance is made (a variable of a program or function block, "
+                    f"or a global), not on {where}",
+                    at,
+                )
+                continue
+            check_instance_args(checker, symbol, written, at)
         for info, method in methods:
             check_method_body(self, info, method)
         for pou in self.project.pous:
@@ -431,11 +446,12 @@ class ProjectChecker:
     ) -> None:
         report = checker.report
         for decl in block.decls:
-            ty = self.resolve(decl.type, checker)
+            spec, written = instance_spec(decl.type, self.result.pous)
+            ty = self.resolve(spec, checker)
             self._check_decl(block, decl, ty, pou, report)
             init = decl.init
-            if init is None and isinstance(decl.type, ast.NamedType):
-                typedef = self.result.types.get(decl.type.name.upper())
+            if init is None and isinstance(spec, ast.NamedType):
+                typedef = self.result.types.get(spec.name.upper())
                 init = typedef.init if typedef is not None else None
             for name in decl.names:
                 if name.name:
@@ -450,7 +466,7 @@ class ProjectChecker:
                     name.name or name.address,
                     block.kind,
                     ty,
-                    decl.type,
+                    spec,
                     init,
                     name.address,
                     block.constant,
@@ -461,6 +477,8 @@ class ProjectChecker:
                     pou.name if pou else None,
                 )
                 table[key] = symbol
+                if written is not None:
+                    self._written_args.append((symbol, written, decl.type, checker, pou))
                 if block.kind == "VAR_EXTERNAL" and pou is not None:
                     self._check_external(symbol, report, name)
 

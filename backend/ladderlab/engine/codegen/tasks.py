@@ -12,6 +12,7 @@ from __future__ import annotations
 
 from ...ir import nodes as ir
 from ...ir import types as t
+from ...ir.fb_init import init_statements
 from .chunks import plan as chunk_plan
 from .context import ModuleContext
 from .scope import Scope
@@ -61,6 +62,22 @@ def emit_tasks(module: ModuleContext, code: Source) -> None:
             with code.indent():
                 _statements(module, "__CONFIG", kept, code)
         _statements(module, "__CONFIG", fresh, code)
+    code.line()
+    code.piece()
+    code.line("def ll_fb_init(warm):")
+    with code.indent():
+        code.line("# FB_init of every instance (ir/fb_init.py): bInitRetains is TRUE on a cold start")
+        code.line("if warm:")
+        with code.indent():
+            _statements(module, "__INIT", init_statements(module.program, retains=False), code)
+            code.line("pass")
+        code.line("else:")
+        with code.indent():
+            _statements(module, "__INIT", init_statements(module.program, retains=True), code)
+            code.line("pass")
+        if module.debug:
+            code.line("return")
+            code.line("yield  # a generator even when no pause point is reached")
     code.line()
 
 

@@ -1,0 +1,178 @@
+"""CODESYS's FB_init: the method an instance runs by itself when it is initialised, with its declaration's arguments.
+
+``fb : F(n := 3);`` gives ``F.FB_init`` its own inputs (after the two the system passes, ``bInitRetains`` and
+``bInCopyCode``); ``a : ARRAY [0..1] OF F[(n := 1), (n := 2)];`` gives each element its own. Neither form is a type
+of its own in the grammar: ``F(n := 3)`` reads as a based enumeration and ``F(3)`` as a sized type, which name a
+function block only here (``instance_spec``). The arguments are checked against the FB_init the instance runs
+(``check_instance_args``) and kept on the variable's Symbol; the engine runs the calls (ir/fb_init.py).
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from ..iec.spelling import did_you_mean
+from . import ast
+from . import types as t
+from .rules import EnumValue, assignable_or_report
+from .symbols import PouInfo, Symbol
+
+#: The inputs every FB_init has first, which the system sets (CODESYS compiler error C0119).
+SYSTEM_INPUTS = ("BINITRETAINS", "BINCOPYCODE")
+#: Methods CODESYS calls by itself; LadderLab runs FB_init and FB_exit (docs/st.md, "FB_init and FB_exit").
+IMPLICIT_METHODS = ("FB_INIT", "FB_EXIT", "FB_REINIT")
+
+#: One instance's arguments as written: (input name, or None when positional; value; node to locate errors at)
+Written = list[tuple[str | None, ast.Expr, Any]]
+
+
+def instance_spec(spec: ast.TypeSpec, pous: dict[str, PouInfo]) -> tuple[ast.TypeSpec, list[Written] | None]:
+    """``spec`` without FB_init arguments, and the arguments of each instance it declares (None: none given)."""
+
+    def block(name: str) -> bool:
+        info = pous.get(name.upper())
+        return info is not None and info.kind == "FUNCTION_BLOCK"
+
+    if isinstance(spec, ast.EnumType) and spec.base and block(spec.base):
+        args: Written = [
+            (v.name, v.value, v) if v.value is not None else (None, ast.Name(v.name, v.span), v) for v in spec.values
+        ]
+        return ast.NamedType(spec.base, spec.span), [args]
+    if isinstance(spec, ast.SizedType) and block(spec.name):
+        return ast.NamedType(spec.name, spec.span), [[(None, spec.size, spec.size)]]
+    if isinstance(spec, ast.ArrayType) and isinstance(spec.element, ast.InstanceArgsType):
+        element = spec.element
+        plain = ast.ArrayType(spec.ranges, ast.NamedType(element.name, element.span), spec.span)
+        return plain, [[(name, value, e) for name, value in e.fields] for e in element.elements]  # type: ignore[misc]
+    return spec, None
+
+
+def check_instance_args(checker: Any, symbol: Symbol, written: list[Written], at: Any) -> None:
+    """The FB_init arguments of ``symbol`` (an instance or an array of instances): each an input of the FB_init its
+    FB runs, given once, of its type, constant; every input without an initial value given. Sets
+    ``symbol.init_args`` to each instance's ``(INPUT, value)`` pairs."""
+    report = checker.report
+    ty = symbol.type
+    count = 1
+    while isinstance(ty, t.ArrayType):
+        if None in ty.dims:
+            return
+        for low, high in ty.dims:  # type: ignore[misc]
+            count *= high - low + 1
+        ty = ty.element
+    if not isinstance(ty, t.FbType) or ty.pou is None:
+        if ty is not t.ERROR:
+            report("ST-CALL-ARGS", f"only an instance of a function block takes FB_init arguments, not {ty}", at)
+        return
+    method = ty.pou.find_method("FB_INIT")
+    if method is None:
+        report("ST-CALL-ARGS", f"{ty.pou.name} has no FB_init method: its instances take no arguments", at)
+        return
+    if len(written) != count:
+        report(
+            "ST-INIT",
+            f"{len(written)} FB_init argument lists for {count} instances of {ty.pou.name}: give one per element",
+            at,
+        )
+        return
+    symbol.init_args = [_one_instance(checker, method, args, ty.pou.name, at) for args in written]
+
+
+def _one_instance(checker: Any, method: PouInfo, args: Written, fb: str, at: Any) -> list[tuple[str, ast.Expr]]:
+    report = checker.report
+    inputs = user_inputs(method)
+    given: dict[str, ast.Expr] = {}
+    for position, (name, value, node) in enumerate(args):
+        if name is None:
+            if position >= len(inputs):
+                report("ST-CALL-ARGS", f"the FB_init of {fb} takes {len(inputs)} inputs, not {len(args)}", node)
+                continue
+            param = inputs[position]
+        else:
+            param = next((p for p in inputs if p.name.upper() == name.upper()), None)
+            if param is None:
+                if name.upper() in SYSTEM_INPUTS:
+                    report("ST-CALL-ARGS", f"{name} is the system's to set when the instance is initialised", node)
+                else:
+                    names = [p.name for p in inputs]
+                    report(
+                        "ST-CALL-ARGS",
+                        f"the FB_init of {fb} has no input '{name}'" + did_you_mean(name, names),
+                        node,
+                    )
+                continue
+        if param.name.upper() in given:
+            report("ST-CALL-ARGS", f"the FB_init input {param.name} is given twice", node)
+            continue
+        found = checker.expr(value, param.type)
+        if found is t.ERROR or not assignable_or_report(checker, param.type, found, value, f"FB_init input {param.name}"):
+            continue
+        if not _constant(value):
+            report(
+                "ST-CONST-EXPR",
+                f"the FB_init input {param.name} needs a constant here: LadderLab passes it when the instance is made",
+                value,
+            )
+            continue
+        given[param.name.upper()] = value
+    missing = [p.name for p in inputs if p.name.upper() not in given and p.init is None]
+    if missing:
+        example = ", ".join(f"{name} := ..." for name in missing)
+        report("ST-CALL-ARGS", f"the FB_init of {fb} needs {', '.join(missing)}: declare it as {fb}({example})", at)
+    return list(given.items())
+
+
+_LITERALS = (ast.IntLit, ast.RealLit, ast.BoolLit, ast.StringLit, ast.TimeLit, ast.TypedLit)
+
+
+def _constant(node: ast.Expr) -> bool:
+    """A checked expression of literals, CONSTANT variables and enumeration values only."""
+    if isinstance(node, _LITERALS):
+        return True
+    if isinstance(node, (ast.Name, ast.Member)) and isinstance(node.ref, EnumValue):
+        return True
+    if isinstance(node, ast.Name):
+        return isinstance(node.ref, Symbol) and node.ref.constant
+    if isinstance(node, ast.Unary):
+        return _constant(node.operand)
+    if isinstance(node, ast.Binary):
+        return _constant(node.left) and _constant(node.right)
+    return False
+
+
+def user_inputs(method: PouInfo) -> list[Symbol]:
+    """An FB_init's inputs that the declaration gives: all but the system's two."""
+    return [p for p in method.parameters("VAR_INPUT") if p.name.upper() not in SYSTEM_INPUTS]
+
+
+def check_fb_init_methods(checker: Any, fbs: list[PouInfo]) -> None:
+    """Each FB_init starts with the inputs bInitRetains and bInCopyCode (BOOL) and has no other kind of parameter;
+    one of a derived FB takes its base's inputs first, in their order (CODESYS C0119; Beckhoff's "FB_init with
+    derived function blocks"); an FB_exit takes bInCopyCode (BOOL)."""
+    for fb in fbs:
+        for key, needs in (("FB_INIT", ["bInitRetains", "bInCopyCode"]), ("FB_EXIT", ["bInCopyCode"])):
+            method = fb.methods.get(key)
+            if method is None:
+                continue
+            report = checker._reporter(f"{method.name}/declarations", method.name)
+            params = method.parameters()
+            head = [(p.name.upper(), p.type) for p in params[: len(needs)]]
+            if head != [(name.upper(), t.BOOL) for name in needs]:
+                inputs = " and ".join(needs)
+                report("ST-DECL", f"an {method.method.name} method needs the inputs {inputs} of type BOOL first", None)
+                continue
+            if any(p.var_class != "VAR_INPUT" for p in params):
+                report("ST-DECL", f"{method.name} takes inputs only: nothing calls it to pass in-outs or outputs", None)
+                continue
+            inherited = fb.base.find_method(key) if fb.base is not None else None
+            if inherited is None:
+                continue
+            theirs = [(p.name.upper(), p.type) for p in inherited.parameters()]
+            mine = [(p.name.upper(), p.type) for p in params[: len(theirs)]]
+            if len(mine) != len(theirs) or any(a[0] != b[0] or not t.same(a[1], b[1]) for a, b in zip(mine, theirs)):
+                listed = ", ".join(p.name for p in inherited.parameters())
+                report(
+                    "ST-DECL",
+                    f"{method.name} must take the inputs of {inherited.name} first, in their order ({listed})",
+                    None,
+                )
