@@ -221,26 +221,28 @@ class Simulation:
 
     # ------------------------------------------------------------------ state
 
-    def _initialise(self, warm: bool) -> None:
+    def _initialise(self, warm: bool, implicit: bool = True) -> None:
         """The process image cleared (the inputs stay as the world set them), the globals - program instances first
-        (codegen/tasks.py) - then the VAR_CONFIG initial values."""
+        (codegen/tasks.py) - then the VAR_CONFIG initial values, then (``implicit``) every instance's FB_init."""
         self._image.clear()
         self._ns["ll_init_globals"](warm)
         self._ns["ll_config_init"](warm)
-        self._fb_init(warm)
+        if implicit:
+            self._implicit_calls("ll_fb_init", warm)
         self._schedule.reset_triggers()
         self._paths = None
         if self._viewed is not None:  # fresh instances record every network
             self.view(self._viewed)
 
-    def _fb_init(self, warm: bool) -> None:
-        """Every instance's FB_init (ir/fb_init.py), under the longest task watchdog. The debug variant's calls are
-        generators: their pause points are passed over (a breakpoint in FB_init does not halt the initialisation,
-        as in CODESYS; docs/st.md). A runtime error stops every task with the fault, located in FB_init."""
+    def _implicit_calls(self, function: str, warm: bool) -> None:
+        """Every instance's FB_init (``ll_fb_init``) or FB_exit (``ll_fb_exit``; ir/fb_init.py), under the longest
+        task watchdog. The debug variant's calls are generators: their pause points are passed over (a breakpoint
+        in FB_init does not halt the initialisation; docs/st.md). A runtime error stops every task with the fault,
+        located in the method."""
         self._paths = None  # (a fault names the instance it happened in)
         self._watchdog.arm(max((task.watchdog_s for task in self._tasks), default=0.1))
         try:
-            run = self._ns["ll_fb_init"](warm)
+            run = self._ns[function](warm)
             if self.debugger is not None:
                 for _ in run:
                     pass
@@ -253,7 +255,7 @@ class Simulation:
                     self.compiled.generated,
                     self.compiled.filename,
                     self._ns,
-                    task="",
+                    task="(initialisation)" if function == "ll_fb_init" else "(reset)",
                     time_ms=self.time_ms,
                     scan=self.scan_count,
                     instance_path=self._instance_path,
@@ -286,7 +288,9 @@ class Simulation:
         Forces, injected faults and inputs waiting for the next scan stay."""
         self.submit(InputEvent("reset", cold=cold))
 
-    def _reset(self, cold: bool, initialise: bool = True) -> None:
+    def _reset(self, cold: bool, initialise: bool = True, implicit: bool = True) -> None:
+        """``implicit``: a restart the program sees, which runs FB_exit on the instances first and FB_init on the
+        new ones (not a restore of a captured state, which sets every value itself)."""
         self._deferred_pairs.clear()  # (a restart may make new FB instances: arrays of them are rebuilt)
         if self._scan is not None:
             self._scan.close()  # type: ignore[attr-defined]  # generated POU classes and their namespace are untyped
@@ -298,8 +302,10 @@ class Simulation:
         self.faults.clear()
         for task in self._tasks:
             task.stopped = False
+        if implicit:
+            self._implicit_calls("ll_fb_exit", not cold)
         if initialise:
-            self._initialise(warm=not cold)
+            self._initialise(warm=not cold, implicit=implicit)
         self._apply_forces()
 
     # ------------------------------------------------------------------ running
@@ -1048,7 +1054,7 @@ class Simulation:
             raise ValueError("that state was captured from another program")
         data = [*state.instances.values(), *state.globals.values()]
         # a state that holds every value overwrites all an initialisation would set (about half a restore's time)
-        self._reset(cold=True, initialise=any(holds_references(item) for item in data))
+        self._reset(cold=True, initialise=any(holds_references(item) for item in data), implicit=False)
         for name, (pou, links) in state.attached.items():
             if name not in self._attached:
                 self.attach(name, pou, links)

@@ -25,12 +25,13 @@ ORIGIN = Origin("INITIALISATION")
 _DINT = Elementary("DINT")
 
 
-def fb_init_chains(checked: CheckResult) -> dict[str, list[str]]:
-    """For each FB with an FB_init in its lineage: the FB_init methods its instances run, the base's first."""
+def method_chains(checked: CheckResult, key: str) -> dict[str, list[str]]:
+    """For each FB with the method ``key`` (FB_INIT, FB_EXIT) in its lineage: those its instances run, the base's
+    first."""
     chains = {}
     for info in checked.pous.values():
         if info.kind == "FUNCTION_BLOCK":
-            chain = [fb.methods["FB_INIT"].name.upper() for fb in reversed(info.lineage()) if "FB_INIT" in fb.methods]
+            chain = [fb.methods[key].name.upper() for fb in reversed(info.lineage()) if key in fb.methods]
             if chain:
                 chains[info.name.upper()] = chain
     return chains
@@ -38,19 +39,28 @@ def fb_init_chains(checked: CheckResult) -> dict[str, list[str]]:
 
 def init_statements(program: Program, retains: bool) -> list[Stmt]:
     """The FB_init calls of every instance of ``program``, in order (``retains``: a cold start)."""
-    walk = _Walk(program, retains)
-    for instance in program.program_instances():
-        walk.members(instance.pou.upper(), Var("global", instance.name.upper(), FbInstance(instance.pou.upper())))
-    for slot in program.globals:
-        walk.slot(slot, Var("global", slot.name, slot.type))
-    return walk.out
+    return _Walk(program, program.fb_inits, retains, with_args=True).run()
+
+
+def exit_statements(program: Program) -> list[Stmt]:
+    """The FB_exit calls of every instance of ``program`` before a restart (CODESYS's "GlobalExit ... before a new
+    download or a reset"): the reverse of the initialisation's order, so a derived FB's FB_exit runs before its
+    base's (Beckhoff, "FB_exit with derived function blocks") and an instance's before those of its instances."""
+    return _Walk(program, program.fb_exits, False, with_args=False).run()[::-1]
 
 
 class _Walk:
-    def __init__(self, program: Program, retains: bool) -> None:
-        self.program, self.retains = program, retains
+    def __init__(self, program: Program, chains: dict[str, list[str]], retains: bool, with_args: bool) -> None:
+        self.program, self.chains, self.retains, self.with_args = program, chains, retains, with_args
         self.out: list[Stmt] = []
         self._needs: dict[str, bool] = {}
+
+    def run(self) -> list[Stmt]:
+        for instance in self.program.program_instances():
+            self.members(instance.pou.upper(), Var("global", instance.name.upper(), FbInstance(instance.pou.upper())))
+        for slot in self.program.globals:
+            self.slot(slot, Var("global", slot.name, slot.type))
+        return self.out
 
     def needs(self, fb: str) -> bool:
         """Whether an instance of ``fb`` runs an FB_init, its own or one of an instance inside it."""
@@ -58,7 +68,7 @@ class _Walk:
             self._needs[fb] = False  # (a cycle of instances is refused by the checker)
             pou = self.program.pous.get(fb)
             inside = pou is not None and any(self.holds(slot.type) for slot in pou.slots if _made(slot))
-            self._needs[fb] = fb in self.program.fb_inits or inside
+            self._needs[fb] = fb in self.chains or inside
         return self._needs[fb]
 
     def holds(self, ty: IrType) -> bool:
@@ -82,8 +92,8 @@ class _Walk:
     def instance(self, var: Var, args: tuple[tuple[str, Const], ...]) -> None:
         fb = var.type.fb  # type: ignore[union-attr]  # _elements gives instances
         self.members(fb, var)
-        given = dict(args)
-        for method in self.program.fb_inits.get(fb, []):
+        given = dict(args) if self.with_args else {}
+        for method in self.chains.get(fb, []):
             inputs = [s for s in self.program.pous[method].slots if s.var_class == "VAR_INPUT"]
             values = [self.system(s) or given.get(s.name) or Const(s.initial, s.type) for s in inputs]
             call = Call(method, tuple(values), tuple(s.type for s in inputs), BOOL, True, (var,), False)

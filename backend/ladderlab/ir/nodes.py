@@ -480,6 +480,8 @@ class Program:
     base_bodies: frozenset[str] = frozenset()
     #: FB -> the FB_init methods its instances run, base first (ir/fb_init.py); only FBs with one in their lineage
     fb_inits: dict[str, list[str]] = field(default_factory=dict)
+    #: FB -> the FB_exit methods its instances run before a restart, base first (ir/fb_init.py reverses them)
+    fb_exits: dict[str, list[str]] = field(default_factory=dict)
     #: FB instances may be mocked (a unit test program, engine/doubles.py swaps an instance's class): the standard
     #: FB bodies pasted in place of their calls are guarded by the instance's class
     mockable: bool = False

@@ -21,11 +21,11 @@ from . import ast
 from . import types as t
 from .body import BodyChecker
 from .configuration import check_configuration, configuration_globals
+from .fb_init import check_fb_init_methods, check_instance_args, check_no_args, instance_spec
 from .il_check import check_il_body
 from .il_parser import IlBody, parse_il
 from .inheritance import abstract_instance, check_overrides, link_bases
 from .interfaces import check_implementations, declare_interfaces, link_implements, register_interfaces
-from .fb_init import check_fb_init_methods, check_instance_args, instance_spec
 from .libraries import with_libraries
 from .methods import check_method_body, check_method_recursion, declare_methods
 from .parser import (
@@ -83,7 +83,8 @@ class ProjectChecker:
         self.type_decls: dict[str, ast.TypeDecl] = {}
         self._resolving: set[str] = set()
         #: declared instances with FB_init arguments, checked once every method is declared (st/fb_init.py)
-        self._written_args: list[tuple[Symbol, list, Any, BodyChecker, PouInfo | None]] = []
+        self._written_args: list[tuple[Symbol, list | None, Any, BodyChecker, PouInfo | None]] = []
+        self._args_checked = False
 
     # ------------------------------------------------------------ driver
     def run(self) -> CheckResult:
@@ -135,17 +136,9 @@ class ProjectChecker:
         check_fb_init_methods(self, blocks)
         for pou in self.project.pous:
             self._check_initial_values(pou)
-        for symbol, written, at, checker, owner in self._written_args:  # once the FB_init methods are declared
-            if (owner is not None and owner.kind == "FUNCTION") or symbol.var_class in ("VAR_IN_OUT", "VAR_EXTERNAL"):
-                where = f"{article(symbol.var_class)}" if owner is None or owner.kind != "FUNCTION" else "a call's variable"
-                checker.report(
-                    "ST-DECL",
-                    "FB_init arguments belong where an instance is made (a variable of a program or function block, "
-                    f"or a global), not on {where}",
-                    at,
-                )
-                continue
-            check_instance_args(checker, symbol, written, at)
+        for entry in self._written_args:  # once the FB_init methods are declared
+            self._check_written(*entry)
+        self._args_checked = True
         for info, method in methods:
             check_method_body(self, info, method)
         for pou in self.project.pous:
@@ -160,6 +153,27 @@ class ProjectChecker:
         self._check_recursion()
         self.result.configuration = check_configuration(self.result, self.project, self.resolve, self._reporter_for)
         return self.result
+
+    def _check_written(
+        self, symbol: Symbol, written: list | None, at: Any, checker: BodyChecker, owner: PouInfo | None, late=False
+    ) -> None:
+        """A declared variable's FB_init arguments, or their absence (st/fb_init.py). ``late``: a test file's
+        variable, whose instance LadderLab makes without running FB_init."""
+        if owner is not None and owner.kind == "FUNCTION":
+            return  # a function or method holds no instance at all (ST-57, _check_decl)
+        if written is None:
+            check_no_args(checker, symbol, late)
+            return
+        if late or symbol.var_class in ("VAR_IN_OUT", "VAR_EXTERNAL"):
+            where = "a test's variable" if late else article(symbol.var_class)
+            checker.report(
+                "ST-DECL",
+                "FB_init arguments belong where an instance is made (a variable of a program or function block, or "
+                f"a global), not on {where}",
+                at,
+            )
+            return
+        check_instance_args(checker, symbol, written, at)
 
     def _reporter_for(self, file: str) -> Reporter:
         return self._reporter(file, None)
@@ -411,7 +425,7 @@ class ProjectChecker:
         silent = BodyChecker(self.result, info, lambda *args, **kwargs: None)
         for block in blocks:
             if block.constant and block.kind == "VAR":
-                self.declare_block(block, constants, silent, info)
+                self.declare_block(block, constants, silent, info, record=False)
         return constants
 
     def _declare_return_type(self, pou, info: PouInfo) -> None:
@@ -442,8 +456,14 @@ class ProjectChecker:
                 check_init(checker, symbol.type, symbol.init)
 
     def declare_block(
-        self, block: ast.VarBlock, table: dict[str, Symbol], checker: BodyChecker, pou: PouInfo | None
+        self,
+        block: ast.VarBlock,
+        table: dict[str, Symbol],
+        checker: BodyChecker,
+        pou: PouInfo | None,
+        record: bool = True,
     ) -> None:
+        """Declare ``block``'s variables in ``table``; ``record``: check their FB_init arguments (st/fb_init.py)."""
         report = checker.report
         for decl in block.decls:
             spec, written = instance_spec(decl.type, self.result.pous)
@@ -477,8 +497,10 @@ class ProjectChecker:
                     pou.name if pou else None,
                 )
                 table[key] = symbol
-                if written is not None:
+                if record:
                     self._written_args.append((symbol, written, decl.type, checker, pou))
+                    if self._args_checked:  # a test file's variables, declared after the project's check
+                        self._check_written(*self._written_args.pop(), late=True)
                 if block.kind == "VAR_EXTERNAL" and pou is not None:
                     self._check_external(symbol, report, name)
 

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from ..iec import stdlib
 from ..iec.spelling import did_you_mean
 from . import ast
 from . import types as t
@@ -31,7 +32,7 @@ def instance_spec(spec: ast.TypeSpec, pous: dict[str, PouInfo]) -> tuple[ast.Typ
 
     def block(name: str) -> bool:
         info = pous.get(name.upper())
-        return info is not None and info.kind == "FUNCTION_BLOCK"
+        return (info is not None and info.kind == "FUNCTION_BLOCK") or stdlib.function_block(name) is not None
 
     if isinstance(spec, ast.EnumType) and spec.base and block(spec.base):
         args: Written = [
@@ -60,13 +61,13 @@ def check_instance_args(checker: Any, symbol: Symbol, written: list[Written], at
         for low, high in ty.dims:  # type: ignore[misc]
             count *= high - low + 1
         ty = ty.element
-    if not isinstance(ty, t.FbType) or ty.pou is None:
+    if not isinstance(ty, t.FbType):
         if ty is not t.ERROR:
             report("ST-CALL-ARGS", f"only an instance of a function block takes FB_init arguments, not {ty}", at)
         return
-    method = ty.pou.find_method("FB_INIT")
+    method = ty.pou.find_method("FB_INIT") if ty.pou is not None else None
     if method is None:
-        report("ST-CALL-ARGS", f"{ty.pou.name} has no FB_init method: its instances take no arguments", at)
+        report("ST-CALL-ARGS", f"{ty.name} has no FB_init method: its instances take no arguments", at)
         return
     if len(written) != count:
         report(
@@ -82,6 +83,7 @@ def _one_instance(checker: Any, method: PouInfo, args: Written, fb: str, at: Any
     report = checker.report
     inputs = user_inputs(method)
     given: dict[str, ast.Expr] = {}
+    seen: set[str] = set()  # (an input given with a wrong value is not missing too)
     for position, (name, value, node) in enumerate(args):
         if name is None:
             if position >= len(inputs):
@@ -101,11 +103,13 @@ def _one_instance(checker: Any, method: PouInfo, args: Written, fb: str, at: Any
                         node,
                     )
                 continue
-        if param.name.upper() in given:
+        if param.name.upper() in seen:
             report("ST-CALL-ARGS", f"the FB_init input {param.name} is given twice", node)
             continue
+        seen.add(param.name.upper())
         found = checker.expr(value, param.type)
-        if found is t.ERROR or not assignable_or_report(checker, param.type, found, value, f"FB_init input {param.name}"):
+        what = f"FB_init input {param.name}"
+        if found is t.ERROR or not assignable_or_report(checker, param.type, found, value, what):
             continue
         if not _constant(value):
             report(
@@ -115,11 +119,38 @@ def _one_instance(checker: Any, method: PouInfo, args: Written, fb: str, at: Any
             )
             continue
         given[param.name.upper()] = value
-    missing = [p.name for p in inputs if p.name.upper() not in given and p.init is None]
+    _report_missing(checker, method, fb, seen, at)
+    return list(given.items())
+
+
+def _report_missing(checker: Any, method: PouInfo, fb: str, given: set[str], at: Any, array: bool = False) -> None:
+    missing = [p.name for p in user_inputs(method) if p.name.upper() not in given and p.init is None]
     if missing:
         example = ", ".join(f"{name} := ..." for name in missing)
-        report("ST-CALL-ARGS", f"the FB_init of {fb} needs {', '.join(missing)}: declare it as {fb}({example})", at)
-    return list(given.items())
+        form = f"ARRAY [...] OF {fb}[({example}), ...]" if array else f"{fb}({example})"
+        checker.report("ST-CALL-ARGS", f"the FB_init of {fb} needs {', '.join(missing)}: declare it as {form}", at)
+
+
+def check_no_args(checker: Any, symbol: Symbol, in_test: bool = False) -> None:
+    """An instance declared without FB_init arguments: its FB_init needs none (each input has an initial value).
+    ``in_test``: a test file's variable (docs/testing.md), whose instance is made without it (a warning)."""
+    ty, array = symbol.type, False
+    while isinstance(ty, t.ArrayType):
+        ty, array = ty.element, True
+    if symbol.var_class in ("VAR_IN_OUT", "VAR_EXTERNAL") or not isinstance(ty, t.FbType) or ty.pou is None:
+        return
+    method = ty.pou.find_method("FB_INIT")
+    if method is None:
+        return
+    if in_test:
+        checker.report(
+            "ST-DECL",
+            f"{ty.pou.name}'s FB_init does not run for a test's variables: the instance keeps its declared values",
+            symbol,
+            severity="warning",
+        )
+        return
+    _report_missing(checker, method, ty.pou.name, set(), symbol, array)
 
 
 _LITERALS = (ast.IntLit, ast.RealLit, ast.BoolLit, ast.StringLit, ast.TimeLit, ast.TypedLit)

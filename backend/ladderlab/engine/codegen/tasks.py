@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from ...ir import nodes as ir
 from ...ir import types as t
-from ...ir.fb_init import init_statements
+from ...ir.fb_init import exit_statements, init_statements
 from .chunks import plan as chunk_plan
 from .context import ModuleContext
 from .scope import Scope
@@ -75,6 +75,16 @@ def emit_tasks(module: ModuleContext, code: Source) -> None:
         with code.indent():
             _statements(module, "__INIT", init_statements(module.program, retains=True), code)
             code.line("pass")
+        if module.debug:
+            code.line("return")
+            code.line("yield  # a generator even when no pause point is reached")
+    code.line()
+    code.piece()
+    code.line("def ll_fb_exit(warm):")
+    with code.indent():
+        code.line("# FB_exit of every instance before a restart (ir/fb_init.py)")
+        _statements(module, "__EXIT", exit_statements(module.program), code)
+        code.line("pass")
         if module.debug:
             code.line("return")
             code.line("yield  # a generator even when no pause point is reached")
