@@ -16,6 +16,9 @@ from __future__ import annotations
 
 import pytest
 
+from ladderlab.simulation.build import build_project
+from ladderlab.st.project_text import source_to_project
+
 from .oo_support import build, run
 
 MOTOR = """
@@ -339,3 +342,17 @@ def test_arguments_on_an_in_out_are_refused():
             "global), not on a VAR_IN_OUT",
         )
     ]
+
+
+def test_a_breakpoint_in_fb_init_does_not_halt_the_initialisation_but_halts_an_explicit_call():
+    # Beckhoff, "FB_init": setting breakpoints "cannot have the desired effect"; LadderLab passes over them while it
+    # initialises (docs/st.md), and halts at them when the program itself calls FB_init
+    text = MOTOR + "PROGRAM Main\nVAR fb : FB_Motor(nAxis := 3); END_VAR\nfb.FB_init(FALSE, FALSE, 9);\nEND_PROGRAM\n"
+    sim = build_project(source_to_project(text, "oo")[0], "monitor").simulation()  # as the server runs it
+    sim.use_variant("debug")
+    assert sim.set_breakpoint("FB_Motor.FB_init", line=19)  # before := axis;
+    sim.reset(cold=True)
+    assert sim.halted is None
+    assert (sim.read("Main.fb.axis"), sim.read("Main.fb.calls")) == (3, 1)
+    assert sim.cycle(1) == 0  # the program's own call halts there
+    assert (sim.halted.point.origin.pou, sim.halted.point.origin.line) == ("FB_MOTOR.FB_INIT", 19)
