@@ -238,11 +238,14 @@ class Simulation:
         """Every instance's FB_init (``ll_fb_init``) or FB_exit (``ll_fb_exit``; ir/fb_init.py), under the longest
         task watchdog. The debug variant's calls are generators: their pause points are passed over (a breakpoint
         in FB_init does not halt the initialisation; docs/st.md). A runtime error stops every task with the fault,
-        located in the method."""
+        located in the method. A program without either has no such function (codegen/tasks.py)."""
+        calls = self._ns.get(function)
+        if calls is None:
+            return
         self._paths = None  # (a fault names the instance it happened in)
         self._watchdog.arm(max((task.watchdog_s for task in self._tasks), default=0.1))
         try:
-            run = self._ns[function](warm)
+            run = calls(warm)
             if self.debugger is not None:
                 for _ in run:
                     pass

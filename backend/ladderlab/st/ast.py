@@ -411,7 +411,26 @@ class InstanceArgsType:
     span: Span = _span()
 
 
-TypeSpec = NamedType | SizedType | SubrangeType | ArrayType | PointerType | EnumType | StructType | InstanceArgsType
+@dataclass(slots=True)
+class PositionalArgsType:
+    """CODESYS: ``F('', 5)``, a function block type with its instance's FB_init arguments by position."""
+
+    name: str
+    args: list[Expr]
+    span: Span = _span()
+
+
+TypeSpec = (
+    NamedType
+    | SizedType
+    | SubrangeType
+    | ArrayType
+    | PointerType
+    | EnumType
+    | StructType
+    | InstanceArgsType
+    | PositionalArgsType
+)
 
 
 @dataclass(slots=True)

@@ -21,7 +21,7 @@ from . import ast
 from . import types as t
 from .body import BodyChecker
 from .configuration import check_configuration, configuration_globals
-from .fb_init import check_fb_init_methods, check_instance_args, check_no_args, instance_spec
+from .fb_init import check_fb_init_methods, check_instance_args, check_no_args, instance_spec, project_blocks
 from .il_check import check_il_body
 from .il_parser import IlBody, parse_il
 from .inheritance import abstract_instance, check_overrides, link_bases
@@ -280,6 +280,9 @@ class ProjectChecker:
             return t.PointerType(self.resolve(spec.target, checker), spec.kind == "REFERENCE TO")
         if isinstance(spec, ast.EnumType):
             return self._enum(spec, checker, name or "enumeration")
+        if isinstance(spec, (ast.InstanceArgsType, ast.PositionalArgsType)):  # not where a variable is declared
+            report("ST-DECL", "FB_init arguments belong to the declaration of an instance variable", spec)
+            return self._named(ast.NamedType(spec.name, spec.span), report)
         struct = t.StructType(name or "STRUCT")
         for member in spec.members:
             member_type = self.resolve(member.type, checker)
@@ -466,7 +469,7 @@ class ProjectChecker:
         """Declare ``block``'s variables in ``table``; ``record``: check their FB_init arguments (st/fb_init.py)."""
         report = checker.report
         for decl in block.decls:
-            spec, written = instance_spec(decl.type, self.result.pous)
+            spec, written = instance_spec(decl.type, project_blocks(self.result.pous))
             ty = self.resolve(spec, checker)
             self._check_decl(block, decl, ty, pou, report)
             init = decl.init

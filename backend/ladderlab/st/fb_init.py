@@ -9,6 +9,7 @@ function block only here (``instance_spec``). The arguments are checked against 
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import Any
 
 from ..iec import stdlib
@@ -27,13 +28,9 @@ IMPLICIT_METHODS = ("FB_INIT", "FB_EXIT", "FB_REINIT")
 Written = list[tuple[str | None, ast.Expr, Any]]
 
 
-def instance_spec(spec: ast.TypeSpec, pous: dict[str, PouInfo]) -> tuple[ast.TypeSpec, list[Written] | None]:
-    """``spec`` without FB_init arguments, and the arguments of each instance it declares (None: none given)."""
-
-    def block(name: str) -> bool:
-        info = pous.get(name.upper())
-        return (info is not None and info.kind == "FUNCTION_BLOCK") or stdlib.function_block(name) is not None
-
+def instance_spec(spec: ast.TypeSpec, block: Callable[[str], bool]) -> tuple[ast.TypeSpec, list[Written] | None]:
+    """``spec`` without FB_init arguments, and the arguments of each instance it declares (None: none given);
+    ``block`` says whether a name is a function block's."""
     if isinstance(spec, ast.EnumType) and spec.base and block(spec.base):
         args: Written = [
             (v.name, v.value, v) if v.value is not None else (None, ast.Name(v.name, v.span), v) for v in spec.values
@@ -41,11 +38,23 @@ def instance_spec(spec: ast.TypeSpec, pous: dict[str, PouInfo]) -> tuple[ast.Typ
         return ast.NamedType(spec.base, spec.span), [args]
     if isinstance(spec, ast.SizedType) and block(spec.name):
         return ast.NamedType(spec.name, spec.span), [[(None, spec.size, spec.size)]]
+    if isinstance(spec, ast.PositionalArgsType):
+        return ast.NamedType(spec.name, spec.span), [[(None, arg, arg) for arg in spec.args]]
     if isinstance(spec, ast.ArrayType) and isinstance(spec.element, ast.InstanceArgsType):
         element = spec.element
         plain = ast.ArrayType(spec.ranges, ast.NamedType(element.name, element.span), spec.span)
         return plain, [[(name, value, e) for name, value in e.fields] for e in element.elements]  # type: ignore[misc]
     return spec, None
+
+
+def project_blocks(pous: dict[str, PouInfo]) -> Callable[[str], bool]:
+    """Whether a name is a function block's: the project's (checked) or a standard one."""
+
+    def block(name: str) -> bool:
+        info = pous.get(name.upper())
+        return (info is not None and info.kind == "FUNCTION_BLOCK") or stdlib.function_block(name) is not None
+
+    return block
 
 
 def check_instance_args(checker: Any, symbol: Symbol, written: list[Written], at: Any) -> None:

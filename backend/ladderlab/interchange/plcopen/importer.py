@@ -45,6 +45,7 @@ from .configuration import MIXED_DATA, read_instances
 from .exporter import diagram_writer
 from .fbd_import import FbdImporter, fbd_groups, place_comments
 from .graph import read_graph, resolve_continuations
+from .instance_args import INPUTASSIGNMENTS_DATA
 from .ld_import import LdImporter, ld_groups
 from .methods import (
     ACCESS_DATA,
@@ -88,6 +89,7 @@ BACHMANN = "www.bachmann.at/plc/plcopenxml"
 POU_DATA = "http://www.3s-software.com/plcopenxml/pou"
 DATATYPE_DATA = "http://www.3s-software.com/plcopenxml/datatype"
 _UNDERSTOOD = {
+    (INPUTASSIGNMENTS_DATA, "InputAssignments"),  # an instance's FB_init arguments, read with it (instance_args.py)
     (CFC_DATA, "CFC"),  # reported where it is: a POU's or method's body
     (POU_DATA, "pou"),
     (DATATYPE_DATA, "dataType"),
