@@ -15,9 +15,16 @@ bInitRetains and bInCopyCode of type BOOL). The values are worked out by hand fr
 from __future__ import annotations
 
 import pytest
+from hypothesis import given
+from hypothesis import strategies as st
 
 from ladderlab.simulation.build import build_project
 from ladderlab.st.project_text import source_to_project
+from ladderlab.testing.run import prepare
+from tests.support import fuzz_settings
+from tests.testing.helpers import FILE, outcomes
+from tests.testing.helpers import project as unit_project
+from tests.testing.helpers import run as run_unit
 
 from .oo_support import build, run
 
@@ -356,3 +363,73 @@ def test_a_breakpoint_in_fb_init_does_not_halt_the_initialisation_but_halts_an_e
     assert (sim.read("Main.fb.axis"), sim.read("Main.fb.calls")) == (3, 1)
     assert sim.cycle(1) == 0  # the program's own call halts there
     assert (sim.halted.point.origin.pou, sim.halted.point.origin.line) == ("FB_MOTOR.FB_INIT", 19)
+
+
+@fuzz_settings(fast=10)
+@given(
+    rows=st.lists(st.lists(st.integers(-32768, 32767), min_size=1, max_size=3), min_size=1, max_size=3),
+    depth=st.integers(1, 3),
+)
+def test_every_element_gets_its_own_arguments_and_every_level_of_a_lineage_runs_once_base_first(rows, depth):
+    """An ARRAY [1..r, 0..c-1] of a FB derived ``depth`` - 1 times: each element's x is its own argument (row-major
+    order) and its trace lists the lineage's FB_init calls base first, each once."""
+    width = max(len(row) for row in rows)
+    args = [row[i] if i < len(row) else 0 for row in rows for i in range(width)]
+    blocks = []
+    for level in range(depth):
+        extends = f" EXTENDS L{level - 1}" if level else ""
+        own = "VAR_OUTPUT x : INT; trace : STRING(40); END_VAR\n" if not level else ""
+        blocks.append(
+            f"FUNCTION_BLOCK L{level}{extends}\n{own}METHOD FB_init : BOOL\n"
+            "VAR_INPUT bInitRetains : BOOL; bInCopyCode : BOOL; n : INT; END_VAR\n"
+            f"x := n; trace := CONCAT(trace, '{level}');\nEND_METHOD\nEND_FUNCTION_BLOCK\n"
+        )
+    lists = ", ".join(f"(n := {value})" for value in args)
+    declaration = f"a : ARRAY [1..{len(rows)}, 0..{width - 1}] OF L{depth - 1}[{lists}];"
+    sim = run("".join(blocks) + f"PROGRAM Main\nVAR {declaration} END_VAR\nEND_PROGRAM\n")
+    cells = [(r, c) for r in range(1, len(rows) + 1) for c in range(width)]
+    assert [sim.read(f"Main.a[{r}, {c}].x") for r, c in cells] == args
+    assert {sim.read(f"Main.a[{r}, {c}].trace") for r, c in cells} == {"".join(map(str, range(depth)))}
+
+
+UNIT = """FUNCTION_BLOCK F
+VAR_OUTPUT x : INT; END_VAR
+METHOD FB_init : BOOL
+VAR_INPUT bInitRetains : BOOL; bInCopyCode : BOOL; n : INT := 4; END_VAR
+x := n;
+END_METHOD
+x := x + 1;
+END_FUNCTION_BLOCK
+PROGRAM Main
+VAR f : F(n := 7); END_VAR
+f();
+END_PROGRAM
+"""
+
+
+def test_unit_tests_see_the_program_instances_initialised_by_fb_init_and_a_warm_start_runs_it_again():
+    tests = """TEST 'initialised'
+ASSERT_EQ(Main.f.x, 7);
+RUN_SCANS(1);
+ASSERT_EQ(Main.f.x, 8);
+WARM_START;
+ASSERT_EQ(Main.f.x, 7);
+END_TEST
+TEST 'each test starts initialised'
+ASSERT_EQ(Main.f.x, 7);
+END_TEST
+"""
+    assert outcomes(run_unit(UNIT, tests)) == {"initialised": None, "each test starts initialised": None}
+
+
+def test_a_tests_own_instance_is_made_without_fb_init_and_says_so():
+    prepared = prepare(unit_project(UNIT), FILE, "TEST 'own'\nVAR g : F; END_VAR\nASSERT_EQ(g.x, 0);\nEND_TEST\n")
+    assert [d.format() for d in prepared.diagnostics] == [
+        "tests/unit.st:2:5: warning ST-DECL: F's FB_init does not run for a test's variables: the instance keeps its "
+        "declared values"
+    ]
+    given = prepare(unit_project(UNIT), FILE, "TEST 'own'\nVAR g : F(n := 1); END_VAR\nEND_TEST\n")
+    assert [d.format() for d in given.diagnostics] == [
+        "tests/unit.st:2:9: error ST-DECL: FB_init arguments belong where an instance is made (a variable of a "
+        "program or function block, or a global), not on a test's variable"
+    ]
