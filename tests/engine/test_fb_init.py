@@ -433,3 +433,33 @@ def test_a_tests_own_instance_is_made_without_fb_init_and_says_so():
         "tests/unit.st:2:9: error ST-DECL: FB_init arguments belong where an instance is made (a variable of a "
         "program or function block, or a global), not on a test's variable"
     ]
+
+
+def test_instances_in_a_structure_run_their_fb_init_and_one_needing_inputs_is_refused_there():
+    sim = run(
+        """TYPE Axis : STRUCT drive : F; spare : ARRAY [1..2] OF F; id : INT; END_STRUCT END_TYPE
+FUNCTION_BLOCK F
+VAR_OUTPUT x : INT; END_VAR
+METHOD FB_init : BOOL
+VAR_INPUT bInitRetains : BOOL; bInCopyCode : BOOL; n : INT := 5; END_VAR
+x := n;
+END_METHOD
+END_FUNCTION_BLOCK
+PROGRAM Main
+VAR a : Axis; END_VAR
+END_PROGRAM
+"""
+    )
+    assert [sim.read(p) for p in ("Main.a.drive.x", "Main.a.spare[1].x", "Main.a.spare[2].x")] == [5, 5, 5]
+    text = "TYPE Axis : STRUCT drive : F; END_STRUCT END_TYPE\n" + FB
+    found = [(d.code, d.file, d.line, d.column, d.message) for d in build(text).diagnostics if d.severity == "error"]
+    assert found == [
+        (
+            "ST-CALL-ARGS",
+            "types",
+            1,
+            20,
+            "the FB_init of F needs n, which a STRUCT's member cannot be given: give the inputs initial values, or "
+            "declare the instance as a variable",
+        )
+    ]

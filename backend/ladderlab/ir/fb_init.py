@@ -2,14 +2,14 @@
 
 Which run, in which order (docs/st.md, "FB_init and FB_exit"): every instance of a function block whose lineage
 declares an FB_init, in the program instances then the globals, each in declaration order (an array's elements in
-row-major order); an instance's own instances first (they are initialised when it is, so its FB_init finds them
-ready: Beckhoff's "the function block instance is already fully initialized via the implicit initialization code"
-when the explicit FB_init code runs), then for the instance the FB_init of each FB of its lineage, the base's first
-(CODESYS and Beckhoff, "FB_init with derived function blocks"). Each call passes ``bInitRetains`` (TRUE on a cold
-start, FALSE on a warm one: the RETAIN variables kept their values), ``bInCopyCode`` FALSE (no online change here)
-and the declaration's arguments (the input's initial value for one not given). The statements are plain method
-calls that run the base's method itself (no dispatch), so the engine runs, pauses and locates faults in them as in
-any call (engine/codegen/tasks.py ``ll_fb_init``).
+row-major order, a STRUCT's members in their order); an instance's own instances first (they are initialised when
+it is, so its FB_init finds them ready: Beckhoff's "the function block instance is already fully initialized via the
+implicit initialization code" when the explicit FB_init code runs), then for the instance the FB_init of each FB of
+its lineage, the base's first (CODESYS and Beckhoff, "FB_init with derived function blocks"). Each call passes
+``bInitRetains`` (TRUE on a cold start, FALSE on a warm one: the RETAIN variables kept their values), ``bInCopyCode``
+FALSE (no online change here) and the declaration's arguments (the input's initial value for one not given). The
+statements are plain method calls that run the base's method itself (no dispatch), so the engine runs, pauses and
+locates faults in them as in any call (engine/codegen/tasks.py ``ll_fb_init``).
 """
 
 from __future__ import annotations
@@ -18,7 +18,7 @@ import itertools
 
 from ..st.symbols import CheckResult
 from .nodes import Call, Const, FnCall, Index, Member, Origin, Program, Slot, Stmt, Var
-from .types import BOOL, Array, Elementary, FbInstance, IrType
+from .types import BOOL, Array, Elementary, FbInstance, IrType, Struct
 
 #: The origin of the calls: named as the engine names what it runs when the program is initialised
 ORIGIN = Origin("INITIALISATION")
@@ -72,8 +72,11 @@ class _Walk:
         return self._needs[fb]
 
     def holds(self, ty: IrType) -> bool:
+        """Whether a variable of ``ty`` holds an instance that runs an FB_init (in an array, a STRUCT, nested)."""
         while isinstance(ty, Array):
             ty = ty.element
+        if isinstance(ty, Struct):
+            return any(self.holds(f.type) for f in ty.fields)
         return isinstance(ty, FbInstance) and self.needs(ty.fb)
 
     def members(self, pou: str, owner: Var) -> None:
@@ -83,11 +86,19 @@ class _Walk:
                 self.slot(slot, Var(owner.scope, owner.name, slot.type, (*owner.path, Member(slot.name))))
 
     def slot(self, slot: Slot, var: Var) -> None:
-        if not self.holds(slot.type):
+        self.place(var, slot.init_args or ())
+
+    def place(self, var: Var, args: tuple[tuple[tuple[str, Const], ...], ...]) -> None:
+        """The instances ``var`` holds, with each one's arguments (an array's elements in order; a STRUCT's members
+        take none: st/fb_init.py refuses an FB_init there that needs any)."""
+        if not self.holds(var.type):
             return
-        args = slot.init_args or ()
         for number, element in enumerate(_elements(var)):
-            self.instance(element, args[number] if number < len(args) else ())
+            if isinstance(element.type, Struct):
+                for f in element.type.fields:
+                    self.place(Var(element.scope, element.name, f.type, (*element.path, Member(f.name))), ())
+            else:
+                self.instance(element, args[number] if number < len(args) else ())
 
     def instance(self, var: Var, args: tuple[tuple[str, Const], ...]) -> None:
         fb = var.type.fb  # type: ignore[union-attr]  # _elements gives instances

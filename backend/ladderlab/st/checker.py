@@ -21,7 +21,14 @@ from . import ast
 from . import types as t
 from .body import BodyChecker
 from .configuration import check_configuration, configuration_globals
-from .fb_init import check_fb_init_methods, check_instance_args, check_no_args, instance_spec, project_blocks
+from .fb_init import (
+    check_fb_init_methods,
+    check_instance_args,
+    check_no_args,
+    check_struct_members,
+    instance_spec,
+    project_blocks,
+)
 from .il_check import check_il_body
 from .il_parser import IlBody, parse_il
 from .inheritance import abstract_instance, check_overrides, link_bases
@@ -74,6 +81,10 @@ class Reporter:
                 end_column=span.end_column or None,
             )
         )
+
+
+#: Type specifications that may carry an instance's FB_init arguments (st/fb_init.py)
+_MAY_HOLD_ARGS = (ast.EnumType, ast.SizedType, ast.ArrayType, ast.InstanceArgsType, ast.PositionalArgsType)
 
 
 class ProjectChecker:
@@ -134,6 +145,7 @@ class ProjectChecker:
         check_overrides(self, blocks)
         check_implementations(self, blocks)
         check_fb_init_methods(self, blocks)
+        check_struct_members(self)
         for pou in self.project.pous:
             self._check_initial_values(pou)
         for entry in self._written_args:  # once the FB_init methods are declared
@@ -258,6 +270,11 @@ class ProjectChecker:
         report = checker.report
         if isinstance(spec, ast.NamedType):
             return self._named(spec, report)
+        if isinstance(spec, _MAY_HOLD_ARGS):
+            plain, written = instance_spec(spec, project_blocks(self.result.pous))
+            if written is not None:  # ``TYPE T : F(n := 1)``, a STRUCT's member: not an instance variable's declaration
+                report("ST-DECL", "FB_init arguments belong to the declaration of an instance variable", spec)
+                return self.resolve(plain, checker, name)
         if isinstance(spec, ast.SizedType):
             base = t.elementary(spec.name)
             length = constant_value(checker, spec.size)
@@ -280,9 +297,6 @@ class ProjectChecker:
             return t.PointerType(self.resolve(spec.target, checker), spec.kind == "REFERENCE TO")
         if isinstance(spec, ast.EnumType):
             return self._enum(spec, checker, name or "enumeration")
-        if isinstance(spec, (ast.InstanceArgsType, ast.PositionalArgsType)):  # not where a variable is declared
-            report("ST-DECL", "FB_init arguments belong to the declaration of an instance variable", spec)
-            return self._named(ast.NamedType(spec.name, spec.span), report)
         struct = t.StructType(name or "STRUCT")
         for member in spec.members:
             member_type = self.resolve(member.type, checker)

@@ -40,11 +40,16 @@ def instance_spec(spec: ast.TypeSpec, block: Callable[[str], bool]) -> tuple[ast
         return ast.NamedType(spec.name, spec.span), [[(None, spec.size, spec.size)]]
     if isinstance(spec, ast.PositionalArgsType):
         return ast.NamedType(spec.name, spec.span), [[(None, arg, arg) for arg in spec.args]]
+    if isinstance(spec, ast.InstanceArgsType):  # (written for one instance, it is one list for one instance)
+        return ast.NamedType(spec.name, spec.span), _lists(spec)
     if isinstance(spec, ast.ArrayType) and isinstance(spec.element, ast.InstanceArgsType):
         element = spec.element
-        plain = ast.ArrayType(spec.ranges, ast.NamedType(element.name, element.span), spec.span)
-        return plain, [[(name, value, e) for name, value in e.fields] for e in element.elements]  # type: ignore[misc]
+        return ast.ArrayType(spec.ranges, ast.NamedType(element.name, element.span), spec.span), _lists(element)
     return spec, None
+
+
+def _lists(spec: ast.InstanceArgsType) -> list[Written]:
+    return [[(name, value, e) for name, value in e.fields] for e in spec.elements]  # type: ignore[misc]
 
 
 def project_blocks(pous: dict[str, PouInfo]) -> Callable[[str], bool]:
@@ -160,6 +165,34 @@ def check_no_args(checker: Any, symbol: Symbol, in_test: bool = False) -> None:
         )
         return
     _report_missing(checker, method, ty.pou.name, set(), symbol, array)
+
+
+def check_struct_members(checker: Any) -> None:
+    """A STRUCT's member that is an instance (or an array of them) gets no FB_init arguments: its FB_init must need
+    none."""
+    report = checker._reporter("types", None)
+    for typedef in checker.result.types.values():
+        spec, ty = typedef.decl.type, typedef.type
+        if isinstance(spec, ast.StructType) and isinstance(ty, t.StructType):
+            for member in spec.members:
+                for name in member.names:
+                    found = ty.fields.get((name.name or "").upper())
+                    if found is not None:
+                        _member_needs_none(report, found[1], name)
+
+
+def _member_needs_none(report: Any, ty: Any, at: Any) -> None:
+    while isinstance(ty, t.ArrayType):
+        ty = ty.element
+    method = ty.pou.find_method("FB_INIT") if isinstance(ty, t.FbType) and ty.pou is not None else None
+    missing = [p.name for p in user_inputs(method) if p.init is None] if method is not None else []
+    if missing:
+        report(
+            "ST-CALL-ARGS",
+            f"the FB_init of {ty.pou.name} needs {', '.join(missing)}, which a STRUCT's member cannot be given: "
+            "give the inputs initial values, or declare the instance as a variable",
+            at,
+        )
 
 
 _LITERALS = (ast.IntLit, ast.RealLit, ast.BoolLit, ast.StringLit, ast.TimeLit, ast.TypedLit)

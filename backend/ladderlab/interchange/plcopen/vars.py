@@ -120,6 +120,8 @@ def write_type(parent: ET.Element, spec: ast.TypeSpec) -> None:
         node = sub(parent, "struct")
         for decl in spec.members:
             write_variables(node, decl)
+    elif isinstance(spec, (ast.InstanceArgsType, ast.PositionalArgsType)):  # (outside a variable: a build error)
+        sub(parent, "derived", {"name": spec.name})
     else:  # pragma: no cover - the union is closed
         raise TypeError(f"not an ST type node: {spec!r}")
 
