@@ -49,7 +49,7 @@ def instance_spec(spec: ast.TypeSpec, block: Callable[[str], bool]) -> tuple[ast
 
 
 def _lists(spec: ast.InstanceArgsType) -> list[Written]:
-    return [[(name, value, e) for name, value in e.fields] for e in spec.elements]  # type: ignore[misc]
+    return [[(name, value, e) for name, value in e.fields] for e in spec.elements]
 
 
 def project_blocks(pous: dict[str, PouInfo]) -> Callable[[str], bool]:
@@ -72,7 +72,7 @@ def check_instance_args(checker: Any, symbol: Symbol, written: list[Written], at
     while isinstance(ty, t.ArrayType):
         if None in ty.dims:
             return
-        for low, high in ty.dims:  # type: ignore[misc]
+        for low, high in ty.dims:
             count *= high - low + 1
         ty = ty.element
     if not isinstance(ty, t.FbType):

@@ -75,7 +75,7 @@ def read_instance_type(
         return spec
     args = [(name, expression(value, node)) for name, value, node in values]
     if all(name is not None for name, _ in args):
-        return ast.EnumType([ast.EnumValue(name, value) for name, value in args], base=spec.name)  # type: ignore[arg-type]
+        return ast.EnumType([ast.EnumValue(name, value) for name, value in args], base=spec.name)
     if all(name is None for name, _ in args):  # (one alone prints as ``F(3)``, which reads back as a sized type)
         return ast.PositionalArgsType(spec.name, [value for _, value in args])
     problem("FB_init arguments given partly by name and partly by position are dropped", variable)
