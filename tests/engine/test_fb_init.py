@@ -463,3 +463,22 @@ END_PROGRAM
             "declare the instance as a variable",
         )
     ]
+
+
+def test_an_fb_init_input_the_system_cannot_pass_is_refused():
+    text = """TYPE Pair : STRUCT a, b : INT; END_STRUCT END_TYPE
+FUNCTION_BLOCK A
+METHOD FB_init : BOOL
+VAR_INPUT bInitRetains : BOOL; bInCopyCode : BOOL; p : Pair; END_VAR
+END_METHOD
+END_FUNCTION_BLOCK
+"""
+    found = [(d.code, d.file, d.message) for d in build(text).diagnostics if d.severity == "error"]
+    assert found == [
+        (
+            "ST-DECL",
+            "A.FB_init/declarations",
+            "A.FB_init's input p is an array, structure or instance, which LadderLab cannot pass when it calls the "
+            "method by itself: pass a reference (REFERENCE TO, POINTER TO) or the values",
+        )
+    ]

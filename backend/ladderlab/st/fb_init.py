@@ -237,6 +237,15 @@ def check_fb_init_methods(checker: Any, fbs: list[PouInfo]) -> None:
             if any(p.var_class != "VAR_INPUT" for p in params):
                 report("ST-DECL", f"{method.name} takes inputs only: nothing calls it to pass in-outs or outputs", None)
                 continue
+            whole = [p.name for p in params if isinstance(p.type, (t.ArrayType, t.StructType, t.FbType))]
+            if whole:
+                report(
+                    "ST-DECL",
+                    f"{method.name}'s input {whole[0]} is an array, structure or instance, which LadderLab cannot pass "
+                    "when it calls the method by itself: pass a reference (REFERENCE TO, POINTER TO) or the values",
+                    None,
+                )
+                continue
             inherited = fb.base.find_method(key) if fb.base is not None else None
             if inherited is None:
                 continue
