@@ -425,8 +425,8 @@ END_TEST
 def test_a_tests_own_instance_is_made_without_fb_init_and_says_so():
     prepared = prepare(unit_project(UNIT), FILE, "TEST 'own'\nVAR g : F; END_VAR\nASSERT_EQ(g.x, 0);\nEND_TEST\n")
     assert [d.format() for d in prepared.diagnostics] == [
-        "tests/unit.st:2:5: warning ST-DECL: F's FB_init does not run for a test's variables: the instance keeps its "
-        "declared values"
+        "tests/unit.st:2:5: warning ST-DECL: F's FB_init does not run for a test's variables: the instances keep "
+        "their declared values"
     ]
     given = prepare(unit_project(UNIT), FILE, "TEST 'own'\nVAR g : F(n := 1); END_VAR\nEND_TEST\n")
     assert [d.format() for d in given.diagnostics] == [
@@ -481,4 +481,13 @@ END_FUNCTION_BLOCK
             "A.FB_init's input p is an array, structure or instance, which LadderLab cannot pass when it calls the "
             "method by itself: pass a reference (REFERENCE TO, POINTER TO) or the values",
         )
+    ]
+
+
+def test_a_tests_instance_holding_one_with_fb_init_says_so_too():
+    source = UNIT + "FUNCTION_BLOCK Machine\nVAR_OUTPUT drive : F(n := 2); END_VAR\nEND_FUNCTION_BLOCK\n"
+    prepared = prepare(unit_project(source), FILE, "TEST 'own'\nVAR m : Machine; END_VAR\nEND_TEST\n")
+    assert [d.format() for d in prepared.diagnostics] == [
+        "tests/unit.st:2:5: warning ST-DECL: F's FB_init does not run for a test's variables: the instances keep "
+        "their declared values"
     ]

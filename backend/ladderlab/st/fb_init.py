@@ -147,24 +147,43 @@ def _report_missing(checker: Any, method: PouInfo, fb: str, given: set[str], at:
 
 def check_no_args(checker: Any, symbol: Symbol, in_test: bool = False) -> None:
     """An instance declared without FB_init arguments: its FB_init needs none (each input has an initial value).
-    ``in_test``: a test file's variable (docs/testing.md), whose instance is made without it (a warning)."""
+    ``in_test``: a test file's variable (docs/testing.md), whose instances are made without theirs (a warning)."""
+    if symbol.var_class in ("VAR_IN_OUT", "VAR_EXTERNAL"):
+        return
+    if in_test:
+        holder = _fb_init_inside(symbol.type, set())
+        if holder is not None:
+            checker.report(
+                "ST-DECL",
+                f"{holder}'s FB_init does not run for a test's variables: the instances keep their declared values",
+                symbol,
+                severity="warning",
+            )
+        return
     ty, array = symbol.type, False
     while isinstance(ty, t.ArrayType):
         ty, array = ty.element, True
-    if symbol.var_class in ("VAR_IN_OUT", "VAR_EXTERNAL") or not isinstance(ty, t.FbType) or ty.pou is None:
-        return
-    method = ty.pou.find_method("FB_INIT")
-    if method is None:
-        return
-    if in_test:
-        checker.report(
-            "ST-DECL",
-            f"{ty.pou.name}'s FB_init does not run for a test's variables: the instance keeps its declared values",
-            symbol,
-            severity="warning",
-        )
-        return
-    _report_missing(checker, method, ty.pou.name, set(), symbol, array)
+    method = ty.pou.find_method("FB_INIT") if isinstance(ty, t.FbType) and ty.pou is not None else None
+    if method is not None:
+        _report_missing(checker, method, ty.pou.name, set(), symbol, array)
+
+
+def _fb_init_inside(ty: Any, seen: set[int]) -> str | None:
+    """The FB with an FB_init that a variable of ``ty`` holds an instance of (itself, inside, in an array or a
+    STRUCT), or None."""
+    while isinstance(ty, t.ArrayType):
+        ty = ty.element
+    if id(ty) in seen:
+        return None
+    seen.add(id(ty))
+    if isinstance(ty, t.StructType):
+        return next((f for _, field in ty.fields.values() if (f := _fb_init_inside(field, seen))), None)
+    if not isinstance(ty, t.FbType) or ty.pou is None:
+        return None
+    if ty.pou.find_method("FB_INIT") is not None:
+        return ty.pou.name
+    made = (s.type for s in ty.pou.symbols.values() if s.var_class not in ("VAR_IN_OUT", "VAR_EXTERNAL", "VAR_TEMP"))
+    return next((f for member in made if (f := _fb_init_inside(member, seen))), None)
 
 
 def check_struct_members(checker: Any) -> None:
