@@ -47,15 +47,10 @@ def test_every_part_of_the_whole_project_export_is_read():
     merged list written CONSTANT), the task's program (typeName empty: the instance's name) and interval (PT0.01S is
     10 ms), EXTENDS and IMPLEMENTS (<Inheritance>), PRIVATE and PROTECTED (AccessModifiers), the method's comment
     (<documentation>), the properties' accessors in either order; what LadderLab cannot carry is named in a
-    warning, and FB_init (which CODESYS calls by itself, LadderLab not) is a warning at its <Method>."""
+    warning. FB_init is an FB_init, which LadderLab runs by itself as CODESYS does (test_plcopen_fb_init.py)."""
     result = imported()
     assert [(d.code, d.message) for d in result.diagnostics] == [
         ("PLCOPEN-VERSION", "the document uses 'http://www.plcopen.org/xml/tc6_0200'; it is read as TC6 v2.01"),
-        (
-            "PLCOPEN-UNSUPPORTED",
-            "method FB_COUNTER.FB_init was imported as an ordinary method: CODESYS calls it by itself when an "
-            "instance is initialised, LadderLab never does, so its statements run only where the program calls it",
-        ),
         (
             "PLCOPEN-ADDDATA",
             "addData 'Device' (1 place) is another tool's data that LadderLab cannot carry; it was dropped",
@@ -66,8 +61,6 @@ def test_every_part_of_the_whole_project_export_is_read():
         dropped("projectstructure", 1),
         dropped("tasksettings", 1),
     ]
-    text = FIXTURE.read_text()
-    assert result.diagnostics[1].line == text[: text.index('<Method name="FB_init"')].count("\n") + 1
     project = result.project
     assert [(p.name, p.kind, p.extends, p.implements) for p in project.pous] == [
         ("FB_COUNTER", "function_block", None, []),
@@ -182,9 +175,9 @@ def test_ladderlabs_export_of_the_imported_project_imports_back_the_same():
     project = imported().project
     document = export_plcopen(project)
     assert xsd_errors(document) == []
-    for data, warned in ((document, []), (without_ladderlab_data(document), ["FB_COUNTER.FB_init"])):
+    for data in (document, without_ladderlab_data(document)):
         again = import_plcopen(data)
-        assert [d.message.split()[1] for d in again.diagnostics] == warned  # FB_init: a CODESYS file again
+        assert [d.message for d in again.diagnostics] == []
         assert again.project == project
     root = ET.fromstring(without_ladderlab_data(document))
     ns = {"p": "http://www.plcopen.org/xml/tc6_0201", "x": "http://www.w3.org/1999/xhtml"}

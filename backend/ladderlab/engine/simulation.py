@@ -221,16 +221,52 @@ class Simulation:
 
     # ------------------------------------------------------------------ state
 
-    def _initialise(self, warm: bool) -> None:
+    def _initialise(self, warm: bool, implicit: bool = True) -> None:
         """The process image cleared (the inputs stay as the world set them), the globals - program instances first
-        (codegen/tasks.py) - then the VAR_CONFIG initial values."""
+        (codegen/tasks.py) - then the VAR_CONFIG initial values, then (``implicit``) every instance's FB_init."""
         self._image.clear()
         self._ns["ll_init_globals"](warm)
         self._ns["ll_config_init"](warm)
+        if implicit:
+            self._implicit_calls("ll_fb_init", warm)
         self._schedule.reset_triggers()
         self._paths = None
         if self._viewed is not None:  # fresh instances record every network
             self.view(self._viewed)
+
+    def _implicit_calls(self, function: str, warm: bool) -> None:
+        """Every instance's FB_init (``ll_fb_init``) or FB_exit (``ll_fb_exit``; ir/fb_init.py), under the longest
+        task watchdog. The debug variant's calls are generators: their pause points are passed over (a breakpoint
+        in FB_init does not halt the initialisation; docs/st.md). A runtime error stops every task with the fault,
+        located in the method. A program without either has no such function (codegen/tasks.py)."""
+        calls = self._ns.get(function)
+        if calls is None:
+            return
+        self._paths = None  # (a fault names the instance it happened in)
+        self._watchdog.arm(max((task.watchdog_s for task in self._tasks), default=0.1))
+        try:
+            run = calls(warm)
+            if self.debugger is not None:
+                for _ in run:
+                    pass
+        except Exception as error:
+            for task in self._tasks:
+                task.stopped = True
+            self.faults.append(
+                make_fault(
+                    error,
+                    self.compiled.generated,
+                    self.compiled.filename,
+                    self._ns,
+                    task="(initialisation)" if function == "ll_fb_init" else "(reset)",
+                    time_ms=self.time_ms,
+                    scan=self.scan_count,
+                    instance_path=self._instance_path,
+                    places=self.compiled.program.places,
+                )
+            )
+        finally:
+            self._watchdog.deadline = float("inf")
 
     @property
     def time_ms(self) -> float:
@@ -255,7 +291,9 @@ class Simulation:
         Forces, injected faults and inputs waiting for the next scan stay."""
         self.submit(InputEvent("reset", cold=cold))
 
-    def _reset(self, cold: bool, initialise: bool = True) -> None:
+    def _reset(self, cold: bool, initialise: bool = True, implicit: bool = True) -> None:
+        """``implicit``: a restart the program sees, which runs FB_exit on the instances first and FB_init on the
+        new ones (not a restore of a captured state, which sets every value itself)."""
         self._deferred_pairs.clear()  # (a restart may make new FB instances: arrays of them are rebuilt)
         if self._scan is not None:
             self._scan.close()  # type: ignore[attr-defined]  # generated POU classes and their namespace are untyped
@@ -267,8 +305,10 @@ class Simulation:
         self.faults.clear()
         for task in self._tasks:
             task.stopped = False
+        if implicit:
+            self._implicit_calls("ll_fb_exit", not cold)
         if initialise:
-            self._initialise(warm=not cold)
+            self._initialise(warm=not cold, implicit=implicit)
         self._apply_forces()
 
     # ------------------------------------------------------------------ running
@@ -1017,7 +1057,7 @@ class Simulation:
             raise ValueError("that state was captured from another program")
         data = [*state.instances.values(), *state.globals.values()]
         # a state that holds every value overwrites all an initialisation would set (about half a restore's time)
-        self._reset(cold=True, initialise=any(holds_references(item) for item in data))
+        self._reset(cold=True, initialise=any(holds_references(item) for item in data), implicit=False)
         for name, (pou, links) in state.attached.items():
             if name not in self._attached:
                 self.attach(name, pou, links)

@@ -29,6 +29,7 @@ from ..st.libraries import with_libraries
 from ..st.symbols import CheckResult, PouInfo, Symbol
 from .build_limits import data_too_large, source_too_large
 from .context import PouContext
+from .fb_init import method_chains
 from .lower_configuration import lower_configuration
 from .lower_fbd import lower_cfc_body, lower_fbd_body
 from .lower_il import lower_il_body
@@ -93,6 +94,8 @@ def _lower_typed_project(project: Project, checked: CheckResult | None) -> Lower
     diagrams = [(pou.name, pou.body) for pou in project.pous if not isinstance(pou.body, str)]
     program = Program(pous, globals_ + list(image.values()), tasks, instances, access, ProjectPlaces(diagrams))
     program.dispatch = dispatch_tables(checked)
+    program.fb_inits = method_chains(checked, "FB_INIT")
+    program.fb_exits = method_chains(checked, "FB_EXIT")
     program.base_bodies = frozenset(
         info.base.name.upper() for info in checked.pous.values() if info.runs_base_body and info.base is not None
     )

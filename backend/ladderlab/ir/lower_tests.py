@@ -125,6 +125,8 @@ def lower_test_file(project: Project, text: str, file: str) -> TestProgram:
         places=lowered.program.places,
         dispatch=lowered.program.dispatch,
         base_bodies=lowered.program.base_bodies,
+        fb_inits=lowered.program.fb_inits,
+        fb_exits=lowered.program.fb_exits,
         mockable=True,
     )
     return TestProgram(program, builder.tests, builder.sites, list(builder.stubs), diagnostics)

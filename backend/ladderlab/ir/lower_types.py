@@ -33,7 +33,7 @@ from ..st.printer import print_expression
 from ..st.rules import EnumValue, constant_value
 from ..st.symbols import CheckResult, PouInfo, Symbol, TypeDef
 from .byte_layout import byte_layout, same_target, view_specs
-from .nodes import ReferenceInit, Slot, upper_name
+from .nodes import Const, ReferenceInit, Slot, upper_name
 from .types import (
     Array,
     Elementary,
@@ -330,6 +330,25 @@ class TypeLowering:
             symbol.retain,
             symbol.constant,
             symbol.address.upper() if located else None,
+            init_args=self._init_args(symbol),
+        )
+
+    def _init_args(self, symbol: Symbol) -> tuple[tuple[tuple[str, Const], ...], ...] | None:
+        """The FB_init arguments of each instance ``symbol`` holds, as values of their inputs' types (st/fb_init.py)."""
+        if symbol.init_args is None:
+            return None
+        ty = symbol.type
+        while isinstance(ty, t.ArrayType):
+            ty = ty.element
+        method = ty.pou.find_method("FB_INIT")  # type: ignore[union-attr]  # checked: an FB with an FB_init
+        inputs = {p.name.upper(): p for p in method.parameters("VAR_INPUT")}
+        return tuple(
+            tuple(
+                (name, Const(self.initial(p.type, p.type_spec, value), self.type_of(p.type, p.type_spec)))
+                for name, value in args
+                for p in (inputs[name],)
+            )
+            for args in symbol.init_args
         )
 
 

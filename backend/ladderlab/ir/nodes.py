@@ -407,6 +407,9 @@ class Slot:
     constant: bool = False
     address: str | None = None
     hidden: bool = False
+    #: CODESYS: the FB_init inputs of each instance it holds (one tuple; an array's, one per element in row-major
+    #: order) as (INPUT, value) pairs; None: none declared (ir/fb_init.py)
+    init_args: tuple[tuple[tuple[str, Const], ...], ...] | None = None
 
 
 @dataclass(slots=True)
@@ -475,6 +478,10 @@ class Program:
     dispatch: dict[str, dict[str, str]] = field(default_factory=dict)
     #: function blocks whose body a derived one runs with ``SUPER^()`` (``FbCall.body``), upper case
     base_bodies: frozenset[str] = frozenset()
+    #: FB -> the FB_init methods its instances run, base first (ir/fb_init.py); only FBs with one in their lineage
+    fb_inits: dict[str, list[str]] = field(default_factory=dict)
+    #: FB -> the FB_exit methods its instances run before a restart, base first (ir/fb_init.py reverses them)
+    fb_exits: dict[str, list[str]] = field(default_factory=dict)
     #: FB instances may be mocked (a unit test program, engine/doubles.py swaps an instance's class): the standard
     #: FB bodies pasted in place of their calls are guarded by the instance's class
     mockable: bool = False

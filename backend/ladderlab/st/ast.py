@@ -402,7 +402,35 @@ class StructType:
     span: Span = _span()
 
 
-TypeSpec = NamedType | SizedType | SubrangeType | ArrayType | PointerType | EnumType | StructType
+@dataclass(slots=True)
+class InstanceArgsType:
+    """CODESYS: ``F[(n := 1), (n := 2)]``, an array's element type with each element's FB_init arguments."""
+
+    name: str
+    elements: list[StructInit]
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class PositionalArgsType:
+    """CODESYS: ``F('', 5)``, a function block type with its instance's FB_init arguments by position."""
+
+    name: str
+    args: list[Expr]
+    span: Span = _span()
+
+
+TypeSpec = (
+    NamedType
+    | SizedType
+    | SubrangeType
+    | ArrayType
+    | PointerType
+    | EnumType
+    | StructType
+    | InstanceArgsType
+    | PositionalArgsType
+)
 
 
 @dataclass(slots=True)

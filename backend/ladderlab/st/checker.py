@@ -21,6 +21,14 @@ from . import ast
 from . import types as t
 from .body import BodyChecker
 from .configuration import check_configuration, configuration_globals
+from .fb_init import (
+    check_fb_init_methods,
+    check_instance_args,
+    check_no_args,
+    check_struct_members,
+    instance_spec,
+    project_blocks,
+)
 from .il_check import check_il_body
 from .il_parser import IlBody, parse_il
 from .inheritance import abstract_instance, check_overrides, link_bases
@@ -75,12 +83,19 @@ class Reporter:
         )
 
 
+#: Type specifications that may carry an instance's FB_init arguments (st/fb_init.py)
+_MAY_HOLD_ARGS = (ast.EnumType, ast.SizedType, ast.ArrayType, ast.InstanceArgsType, ast.PositionalArgsType)
+
+
 class ProjectChecker:
     def __init__(self, project: Project):
         self.project = project
         self.result = CheckResult()
         self.type_decls: dict[str, ast.TypeDecl] = {}
         self._resolving: set[str] = set()
+        #: declared instances with FB_init arguments, checked once every method is declared (st/fb_init.py)
+        self._written_args: list[tuple[Symbol, list | None, Any, BodyChecker, PouInfo | None]] = []
+        self._args_checked = False
 
     # ------------------------------------------------------------ driver
     def run(self) -> CheckResult:
@@ -129,8 +144,13 @@ class ProjectChecker:
         blocks = [info for info in self.result.pous.values() if info.kind == "FUNCTION_BLOCK"]
         check_overrides(self, blocks)
         check_implementations(self, blocks)
+        check_fb_init_methods(self, blocks)
+        check_struct_members(self)
         for pou in self.project.pous:
             self._check_initial_values(pou)
+        for entry in self._written_args:  # once the FB_init methods are declared
+            self._check_written(*entry)
+        self._args_checked = True
         for info, method in methods:
             check_method_body(self, info, method)
         for pou in self.project.pous:
@@ -145,6 +165,27 @@ class ProjectChecker:
         self._check_recursion()
         self.result.configuration = check_configuration(self.result, self.project, self.resolve, self._reporter_for)
         return self.result
+
+    def _check_written(
+        self, symbol: Symbol, written: list | None, at: Any, checker: BodyChecker, owner: PouInfo | None, late=False
+    ) -> None:
+        """A declared variable's FB_init arguments, or their absence (st/fb_init.py). ``late``: a test file's
+        variable, whose instance LadderLab makes without running FB_init."""
+        if owner is not None and owner.kind == "FUNCTION":
+            return  # a function or method holds no instance at all (ST-57, _check_decl)
+        if written is None:
+            check_no_args(checker, symbol, late)
+            return
+        if late or symbol.var_class in ("VAR_IN_OUT", "VAR_EXTERNAL"):
+            where = "a test's variable" if late else article(symbol.var_class)
+            checker.report(
+                "ST-DECL",
+                "FB_init arguments belong where an instance is made (a variable of a program or function block, or "
+                f"a global), not on {where}",
+                at,
+            )
+            return
+        check_instance_args(checker, symbol, written, at)
 
     def _reporter_for(self, file: str) -> Reporter:
         return self._reporter(file, None)
@@ -229,6 +270,11 @@ class ProjectChecker:
         report = checker.report
         if isinstance(spec, ast.NamedType):
             return self._named(spec, report)
+        if isinstance(spec, _MAY_HOLD_ARGS):
+            plain, written = instance_spec(spec, project_blocks(self.result.pous))
+            if written is not None:  # ``TYPE T : F(n := 1)``, a STRUCT's member: not an instance variable's declaration
+                report("ST-DECL", "FB_init arguments belong to the declaration of an instance variable", spec)
+                return self.resolve(plain, checker, name)
         if isinstance(spec, ast.SizedType):
             base = t.elementary(spec.name)
             length = constant_value(checker, spec.size)
@@ -396,7 +442,7 @@ class ProjectChecker:
         silent = BodyChecker(self.result, info, lambda *args, **kwargs: None)
         for block in blocks:
             if block.constant and block.kind == "VAR":
-                self.declare_block(block, constants, silent, info)
+                self.declare_block(block, constants, silent, info, record=False)
         return constants
 
     def _declare_return_type(self, pou, info: PouInfo) -> None:
@@ -427,15 +473,22 @@ class ProjectChecker:
                 check_init(checker, symbol.type, symbol.init)
 
     def declare_block(
-        self, block: ast.VarBlock, table: dict[str, Symbol], checker: BodyChecker, pou: PouInfo | None
+        self,
+        block: ast.VarBlock,
+        table: dict[str, Symbol],
+        checker: BodyChecker,
+        pou: PouInfo | None,
+        record: bool = True,
     ) -> None:
+        """Declare ``block``'s variables in ``table``; ``record``: check their FB_init arguments (st/fb_init.py)."""
         report = checker.report
         for decl in block.decls:
-            ty = self.resolve(decl.type, checker)
+            spec, written = instance_spec(decl.type, project_blocks(self.result.pous))
+            ty = self.resolve(spec, checker)
             self._check_decl(block, decl, ty, pou, report)
             init = decl.init
-            if init is None and isinstance(decl.type, ast.NamedType):
-                typedef = self.result.types.get(decl.type.name.upper())
+            if init is None and isinstance(spec, ast.NamedType):
+                typedef = self.result.types.get(spec.name.upper())
                 init = typedef.init if typedef is not None else None
             for name in decl.names:
                 if name.name:
@@ -450,7 +503,7 @@ class ProjectChecker:
                     name.name or name.address,
                     block.kind,
                     ty,
-                    decl.type,
+                    spec,
                     init,
                     name.address,
                     block.constant,
@@ -461,6 +514,10 @@ class ProjectChecker:
                     pou.name if pou else None,
                 )
                 table[key] = symbol
+                if record:
+                    self._written_args.append((symbol, written, decl.type, checker, pou))
+                    if self._args_checked:  # a test file's variables, declared after the project's check
+                        self._check_written(*self._written_args.pop(), late=True)
                 if block.kind == "VAR_EXTERNAL" and pou is not None:
                     self._check_external(symbol, report, name)
 

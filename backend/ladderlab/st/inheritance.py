@@ -93,7 +93,7 @@ def check_overrides(checker: Any, fbs: list[PouInfo]) -> None:
                 continue
             if inherited.method.final:
                 where("ST-DECL", f"{inherited.name} is FINAL: {fb.name} cannot override it", None)
-            difference = signature_difference(inherited, method)
+            difference = signature_difference(inherited, method) if info.key != "FB_INIT" else None  # (fb_init.py)
             if difference:
                 where("ST-DECL", f"{method.name} overrides {inherited.name} but {difference}", None)
         if fb.abstract:

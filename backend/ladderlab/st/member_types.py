@@ -27,7 +27,11 @@ def declared_types(declarations: str) -> dict[str, str]:
 def _type_name(spec: ast.TypeSpec) -> str | None:
     while isinstance(spec, (ast.ArrayType, ast.PointerType)):
         spec = spec.element if isinstance(spec, ast.ArrayType) else spec.target
-    return spec.name.upper() if isinstance(spec, ast.NamedType) else None
+    if isinstance(spec, ast.EnumType):  # ``F(n := 1)``: an instance with its FB_init arguments (st/fb_init.py)
+        return spec.base.upper() if spec.base else None
+    if isinstance(spec, (ast.NamedType, ast.SizedType, ast.InstanceArgsType, ast.PositionalArgsType)):
+        return spec.name.upper()
+    return None
 
 
 @dataclass

@@ -208,6 +208,10 @@ def print_type(spec: ast.TypeSpec, level: int = 0) -> str:
         return f"ARRAY [{ranges}] OF {print_type(spec.element, level)}"
     if isinstance(spec, ast.PointerType):
         return f"{spec.kind} {print_type(spec.target, level)}"
+    if isinstance(spec, ast.PositionalArgsType):
+        return f"{spec.name}({', '.join(_expr(a, 0) for a in spec.args)})"
+    if isinstance(spec, ast.InstanceArgsType):
+        return f"{spec.name}[{', '.join(print_initializer(e) for e in spec.elements)}]"
     if isinstance(spec, ast.EnumType):
         values = ", ".join(v.name + (f" := {_expr(v.value, 0)}" if v.value is not None else "") for v in spec.values)
         if spec.base and spec.values and spec.values[0].value is None:  # IEC's `INT (A := 0, B)` needs the first :=

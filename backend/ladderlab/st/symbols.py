@@ -29,6 +29,8 @@ class Symbol:
     span: ast.Span = ast.NO_SPAN
     pou: str | None = None  # owning POU, None for globals
     implicit: str | None = None  # an SFC POU's step, action or named transition (st/sfc.py), None if declared
+    #: CODESYS: each instance's FB_init arguments, (INPUT, value) checked (st/fb_init.py); None: none written
+    init_args: list[list[tuple[str, ast.Expr]]] | None = None
 
 
 @dataclass(eq=False)

@@ -309,6 +309,12 @@ class AstBuilder(Transformer):
     def based_enum_type(self, c):
         return ast.EnumType(c[1:-1], span_of(c), str(c[0]))
 
+    def instance_args_type(self, c):
+        return ast.InstanceArgsType(str(c[0]), c[1:-1], span_of(c))
+
+    def positional_args_type(self, c):
+        return ast.PositionalArgsType(str(c[0]), c[1:-1], span_of(c))
+
     def codesys_based_enum_type(self, c):
         return ast.EnumType(c[:-2], span_of(c), str(c[-1]))
 

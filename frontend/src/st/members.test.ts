@@ -87,6 +87,12 @@ describe("member resolution", () => {
     expect(membersOf("ABS", scope)).toBeNull();
   });
 
+  it("gives an instance declared with FB_init arguments its FB's members", () => {
+    expect(membersOf("Counter(nStart := 3)", scope)?.map((m) => m.name)).toEqual(["Enable", "Total", "Count"]);
+    expect(membersOf("Counter (3, 'a')", scope)?.map((m) => m.name)).toEqual(["Enable", "Total", "Count"]);
+    expect(membersOf("STRING(20)", scope)).toBeNull();
+  });
+
   it("follows access chains through instances and structs, case-insensitively", () => {
     expect(typeOfChain(["delay", "q"], scope)).toBe("BOOL");
     expect(typeOfChain(["ln", "A", "timer", "ET"], scope)).toBe("TIME");

@@ -62,9 +62,12 @@ export interface Scope {
   structs: StructTypes;
 }
 
-/** The members of a type (FB pins or struct fields); null for a type without members. */
+/**
+ * The members of a type (FB pins or struct fields); null for a type without members. An instance declared with its
+ * FB_init arguments, `F(n := 3)` or `F(3)`, has the members of `F` (docs/st.md, "FB_init and FB_exit").
+ */
 export function membersOf(type: string, scope: Scope): readonly Member[] | null {
-  const name = type.trim().toUpperCase();
+  const name = type.replace(/\(.*$/s, "").trim().toUpperCase();
   const fb = scope.library.find((e) => e.kind === "function_block" && e.name.toUpperCase() === name);
   if (fb) {
     return [

@@ -5,13 +5,15 @@ Program instances are objects among the globals (``G.v_INST``, module.py). A tas
 the parameter bindings the lowering put into ``TaskSpec.body`` - so a fault in a binding or a program stops
 that task, and the debug variant steps into the programs (the function is then a generator). VAR_CONFIG
 initial values are set by ``ll_config_init(warm)`` after the globals are initialised (a warm restart keeps
-a RETAIN variable's value instead).
+a RETAIN variable's value instead). ``ll_fb_init(warm)`` and ``ll_fb_exit(warm)`` run the FB_init and FB_exit
+calls of every instance (ir/fb_init.py) when a program has any.
 """
 
 from __future__ import annotations
 
 from ...ir import nodes as ir
 from ...ir import types as t
+from ...ir.fb_init import exit_statements, init_statements
 from .chunks import plan as chunk_plan
 from .context import ModuleContext
 from .scope import Scope
@@ -61,6 +63,33 @@ def emit_tasks(module: ModuleContext, code: Source) -> None:
             with code.indent():
                 _statements(module, "__CONFIG", kept, code)
         _statements(module, "__CONFIG", fresh, code)
+    code.line()
+    _implicit(module, code, "ll_fb_init", "FB_init of every instance: bInitRetains is TRUE on a cold start", True)
+    _implicit(module, code, "ll_fb_exit", "FB_exit of every instance before a restart", False)
+
+
+def _implicit(module: ModuleContext, code: Source, function: str, comment: str, init: bool) -> None:
+    """``function(warm)`` running the FB_init (``init``) or FB_exit calls of ir/fb_init.py; left out when a program has
+    none (the engine then calls nothing)."""
+    cold = init_statements(module.program, retains=True) if init else exit_statements(module.program)
+    if not cold:
+        return
+    code.piece()
+    code.line(f"def {function}(warm):")
+    with code.indent():
+        code.line(f"# {comment} (ir/fb_init.py)")
+        if init:
+            code.line("if warm:")
+            with code.indent():
+                _statements(module, "__INIT", init_statements(module.program, retains=False), code)
+            code.line("else:")
+            with code.indent():
+                _statements(module, "__INIT", cold, code)
+        else:
+            _statements(module, "__EXIT", cold, code)
+        if module.debug:
+            code.line("return")
+            code.line("yield  # a generator even when no pause point is reached")
     code.line()
 
 

@@ -46,6 +46,7 @@ from .configuration import MIXED_DATA, read_instances
 from .exporter import diagram_writer
 from .fbd_import import FbdImporter, fbd_groups, place_comments
 from .graph import read_graph, resolve_continuations
+from .instance_args import INPUTASSIGNMENTS_DATA
 from .ld_import import LdImporter, ld_groups
 from .methods import (
     ACCESS_DATA,
@@ -89,6 +90,7 @@ BACHMANN = "www.bachmann.at/plc/plcopenxml"
 POU_DATA = "http://www.3s-software.com/plcopenxml/pou"
 DATATYPE_DATA = "http://www.3s-software.com/plcopenxml/datatype"
 _UNDERSTOOD = {
+    (INPUTASSIGNMENTS_DATA, "InputAssignments"),  # an instance's FB_init arguments, read with it (instance_args.py)
     (CFC_DATA, "CFC"),  # a POU's chart (codesys_cfc.py); a method's, action's or transition's is reported
     (CALLTYPE_DATA, "CallType"),
     (ELEMENTTYPE_DATA, "ElementType"),  # a vendorElement's: reported where it is

@@ -352,23 +352,19 @@ def read_methods(
     return methods
 
 
-_IMPLICIT = {
-    "FB_INIT": "when an instance is initialised",
-    "FB_REINIT": "after an instance was copied (online change)",
-    "FB_EXIT": "before an instance is removed",
-}
+_IMPLICIT = {"FB_REINIT": "after an instance was copied in an online change, which LadderLab has not"}
 
 
 def _report_implicit(method: ET.Element, pou: str, reader: Reader) -> None:
-    """A warning for a method CODESYS calls by itself (FB_init, FB_reinit, FB_exit): LadderLab imports it as one
-    that runs only when called, so an instance could hold other values than in CODESYS."""
+    """A warning for a method CODESYS calls by itself that LadderLab never calls (FB_reinit; FB_init and FB_exit
+    it runs as CODESYS does, st/fb_init.py): its statements run only where the program calls it."""
     name = method.get("name", "")
     when = _IMPLICIT.get(name.upper())
     if when is not None:
         reader.report(
             "PLCOPEN-UNSUPPORTED",
-            f"method {pou}.{name} was imported as an ordinary method: CODESYS calls it by itself {when}, LadderLab "
-            "never does, so its statements run only where the program calls it",
+            f"method {pou}.{name} was imported as an ordinary method: CODESYS calls it by itself {when}, so its "
+            "statements run only where the program calls it",
             method,
             severity="warning",
             pou=pou,

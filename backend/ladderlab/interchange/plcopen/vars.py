@@ -16,6 +16,7 @@ from ...iec.elementary import canonical_type_name, elementary
 from ...st import ast
 from ...st.parser import parse_expression, parse_type
 from ...st.printer import print_expression, print_type
+from .instance_args import read_instance_type, split_instance_type, write_input_assignments
 from .xml_io import Reader, data_entries, formatted_text, info, ladderlab_data, local, sub, text_content
 
 #: Elementary types the XSD names directly (TIME_OF_DAY and DATE_AND_TIME are spelled TOD and DT there).
@@ -119,6 +120,8 @@ def write_type(parent: ET.Element, spec: ast.TypeSpec) -> None:
         node = sub(parent, "struct")
         for decl in spec.members:
             write_variables(node, decl)
+    elif isinstance(spec, (ast.InstanceArgsType, ast.PositionalArgsType)):  # (outside a variable: a build error)
+        sub(parent, "derived", {"name": spec.name})
     else:  # pragma: no cover - the union is closed
         raise TypeError(f"not an ST type node: {spec!r}")
 
@@ -143,14 +146,17 @@ def write_value(parent: ET.Element, init: ast.Init | None) -> None:
 
 
 def write_variables(parent: ET.Element, decl: ast.VarDecl) -> None:
-    """One ``<variable>`` per declared name (``a, b : INT`` becomes two)."""
+    """One ``<variable>`` per declared name (``a, b : INT`` becomes two); an instance's FB_init arguments in addData
+    (instance_args.py)."""
+    spec, instance = split_instance_type(decl.type)
     for name in decl.names:
         variable = sub(parent, "variable", {"name": name.name or "", "address": name.address})
-        write_type(sub(variable, "type"), decl.type)
+        write_type(sub(variable, "type"), spec)
         if decl.init is not None:
             write_value(sub(variable, "initialValue"), decl.init)
-        if decl.edge:
-            ladderlab_data(variable, {"edge": decl.edge})
+        if decl.edge or instance:
+            add_data = ladderlab_data(variable, {"edge": decl.edge, "instance": instance})
+            write_input_assignments(add_data, decl.type)
         if decl.comment:
             formatted_text(variable, "documentation", decl.comment)
 
@@ -291,9 +297,11 @@ class VarReader:
             name = variable.get("name") or None
             address = variable.get("address") or None
             extra = info(variable, self.reader)
+            spec = self.type(self.reader.child(variable, "type"))
+            carried = extra.get("instance") if extra is not None else None
             decl = ast.VarDecl(
                 [ast.DeclName(name, address)],
-                self.type(self.reader.child(variable, "type")),
+                read_instance_type(variable, spec, carried, self.reader, self.expression, self._problem),
                 self.value(self.reader.child(variable, "initialValue")),
                 extra.get("edge") if extra is not None else None,
             )

@@ -1,0 +1,63 @@
+"""FB_init online (issue 25; docs/st.md "FB_init and FB_exit"): a simulation starts with every instance's FB_init run,
+and a runtime error in one faults the simulation at its start, located in the method's body, over real HTTP."""
+
+from __future__ import annotations
+
+from fastapi.testclient import TestClient
+
+from ladderlab.simulation.registry import SimulationRegistry
+from ladderlab.st.project_text import source_to_project
+from ladderlab.storage import Workspace
+
+from .helpers import detail
+from .test_simulations_support import entry, registry
+
+__all__ = ["registry"]  # fixture used below
+
+SOURCE = """FUNCTION_BLOCK Scale
+VAR_OUTPUT k : INT; END_VAR
+METHOD FB_init : BOOL
+VAR_INPUT bInitRetains : BOOL; bInCopyCode : BOOL; d : INT; END_VAR
+k := 100 / d;
+END_METHOD
+END_FUNCTION_BLOCK
+PROGRAM Main
+VAR s : Scale(d := {d}); k : INT; END_VAR
+k := s.k;
+END_PROGRAM
+"""
+
+
+def simulation(client: TestClient, workspace: Workspace, d: int) -> str:
+    project, diagnostics = source_to_project(SOURCE.format(d=d), "scaled")
+    assert diagnostics == []
+    workspace.create(project)
+    response = client.post("/api/projects/scaled/simulations")
+    assert response.status_code == 201, response.text
+    return response.json()["id"]
+
+
+def test_the_first_scan_sees_what_fb_init_computed(
+    client: TestClient, workspace: Workspace, registry: SimulationRegistry
+) -> None:
+    sim = simulation(client, workspace, 4)
+    info = client.post(f"/api/simulations/{sim}/cycle").json()
+    assert (info["state"], info["fault"]) == ("stopped", None)
+    assert entry(registry, sim).handle.read("Main.k") == 25
+
+
+def test_a_fault_in_fb_init_faults_the_simulation_at_its_start_and_again_after_a_reset(
+    client: TestClient, workspace: Workspace, registry: SimulationRegistry
+) -> None:
+    sim = simulation(client, workspace, 0)
+    info = client.get(f"/api/simulations/{sim}").json()
+    assert info["state"] == "faulted"
+    fault = info["fault"]
+    assert (fault["code"], fault["pou"], fault["line"], fault["column"]) == ("ENGINE-RUNTIME", "SCALE.FB_INIT", 5, 1)
+    assert fault["message"].startswith("division by zero: 100 / 0 at POU SCALE.FB_INIT, line 5 column 1")
+    assert ", task (initialisation), scan 0" in fault["message"]
+    refused = client.post(f"/api/simulations/{sim}/start")
+    assert refused.status_code == 409
+    assert detail(refused)["message"] == "the simulation stopped on a fault: reset it before running"
+    reset = client.post(f"/api/simulations/{sim}/reset", json={"cold": True}).json()
+    assert reset["state"] == "faulted"
