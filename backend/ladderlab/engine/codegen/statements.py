@@ -308,7 +308,8 @@ class Statements:
                 self.probes.aliases[index] = source  # type: ignore[union-attr]  # a probe was just recorded
                 self.src.line(f"{code} = {value}  # ll_pr[{index}] is ll_pr[{source}]  # {comment}")
             else:
-                self.src.line(f"ll_pr[{index}] = {code} = {value}  # {comment}")
+                stored = code if self._output_into(code, value) else f"{code} = {value}"
+                self.src.line(f"ll_pr[{index}] = {stored}  # {comment}")
                 if code in self.temps:
                     self._probed_temp = (self.src, len(self.src.lines), self.group, code, index)
             self._fused = True
@@ -766,8 +767,8 @@ class Statements:
                 for line in inline:
                     self.src.line(line)
                 last = _OUTPUT_STORE.fullmatch(inline[-1])
-                if s.en is None and self.probes is None:
-                    if last is not None:
+                if s.en is None:
+                    if last is not None and self.probes is None:
                         self._output_line = (self.src, len(self.src.lines) - 1, last[1], last[2])
                     where = (self.src.depth, self.src.origin)
                     self._inline_lines = (self.src, first, len(self.src.lines), ty.fb, tuple(known), *where)
