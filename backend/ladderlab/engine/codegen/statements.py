@@ -350,7 +350,7 @@ class Statements:
         line = self.src.lines[held[1]]
         indent = line[: len(line) - len(line.lstrip())]
         self.src.lines[held[1]] = f"{indent}{code} = {value} = {held[3]}"
-        self._output_line = None
+        self._output_line = self._inline_lines = None  # (the body is no longer as inline_body wrote it)
         return True
 
     def _output_into(self, code: str, value: str) -> bool:
