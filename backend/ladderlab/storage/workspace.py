@@ -272,25 +272,31 @@ def _remove_if_empty(folder: Path) -> None:
 
 
 def _fingerprint(folder: Path) -> tuple[object, ...] | None:
-    """Every file and folder under ``folder`` with its inode, size and modification time (ns): what a load reads,
-    so an equal fingerprint means an equal load (a save writes files by rename: new inodes). None when a load must
-    not be skipped: a journal of an interrupted save (the load finishes it) or a symbolic link (its target may
-    change without the folder changing)."""
+    """``folder`` and everything under it, each with its inode, size and modification and status change times
+    (ns; the latter changes with permissions too): what a load reads, so an equal fingerprint means an equal load
+    (a save writes files by rename: new inodes). None when a load must not be skipped: a journal of an interrupted
+    save (the load finishes it), a symbolic link (its target may change without the folder changing), a folder
+    that cannot be listed."""
     if (folder / journal.JOURNAL).exists():
         return None
     entries: list[object] = []
-    for place, folders, files in os.walk(folder):
+
+    def add(path: str) -> bool:
+        try:
+            found = os.lstat(path)
+        except OSError:
+            return False
+        entries.append((path, found.st_ino, found.st_size, found.st_mtime_ns, found.st_ctime_ns))
+        return not stat.S_ISLNK(found.st_mode)
+
+    unlisted: list[OSError] = []
+    if not add(str(folder)):
+        return None
+    for place, folders, files in os.walk(folder, onerror=unlisted.append):
         folders.sort()
-        for name in (*folders, *sorted(files)):
-            path = os.path.join(place, name)
-            try:
-                found = os.lstat(path)
-            except OSError:
-                return None
-            if stat.S_ISLNK(found.st_mode):
-                return None
-            entries.append((path, found.st_ino, found.st_size, found.st_mtime_ns))
-    return tuple(entries)
+        if not all(add(os.path.join(place, name)) for name in (*folders, *sorted(files))):
+            return None
+    return None if unlisted else tuple(entries)
 
 
 def _modified(folder: Path) -> float:
