@@ -51,19 +51,63 @@ def test_the_inlined_body_acts_as_the_call(name, calls):
         for pin in cls.INPUTS
         if not line.lstrip().startswith(f"ll_fb.{pin} =")
     )
+    # each output also stored into a local where the body can (every path stores it): the local holds the output
+    copying = {
+        pin: (cls(), compile("\n".join(lines), f"<inline {name} into {pin}>", "exec"))
+        for pin in cls.OUTPUTS
+        if (lines := inline_body(name, "ll_fb", "now", locals_, (pin, "ll_t_out"))) is not None
+    }
     now = 0
     for flags, preset, step in calls:
         now += step
         inputs = dict(zip([p for p in cls.INPUTS if p not in ("PT", "PV")], flags))
         inputs |= {"PT": preset} if "PT" in cls.INPUTS else {}
         inputs |= {"PV": preset // 10} if "PV" in cls.INPUTS else {}
-        for fb in (called, pasted, known):
+        for fb in (called, pasted, known, *(fb for fb, _ in copying.values())):
             for pin, value in inputs.items():
                 setattr(fb, pin, value)
         called.execute(now)
         exec(body, {}, {"ll_fb": pasted, "now": now})
         exec(with_locals, {}, {"ll_fb": known, "now": now} | {f"ll_t_{pin}": value for pin, value in inputs.items()})
         assert _slots(pasted) == _slots(called) == _slots(known)
+        for pin, (fb, code) in copying.items():
+            frame = {"ll_fb": fb, "now": now, "ll_t_out": "stale"} | {f"ll_t_{p}": v for p, v in inputs.items()}
+            exec(code, {}, frame)
+            assert _slots(fb) == _slots(called)
+            assert frame["ll_t_out"] == getattr(called, pin)
+
+
+def test_an_output_is_copied_into_a_local_only_where_every_path_stores_it():
+    """A TON stores Q on both of its paths, a TOF not when the delay is over (Q keeps its value): only the first
+    can hand Q on in a local (``inline_fbs._output_copied``); a body that reads the local as an input cannot."""
+    ton = inline_body("TON", "ll_fb", "now", (("IN", "ll_t_in"),), ("Q", "ll_t_q"))
+    assert ton is not None
+    assert "    ll_fb._running = ll_fb.Q = ll_t_q = False" in ton
+    assert "        ll_fb.Q = ll_t_q = True" in ton and "        ll_fb.ET = ll_s_pt if ll_s_pt > 0 else 0" in ton
+    assert inline_body("TOF", "ll_fb", "now", (), ("Q", "ll_t_q")) is None
+    assert inline_body("TON", "ll_fb", "now", (("IN", "ll_t_q"),), ("Q", "ll_t_q")) is None
+    assert inline_body("SR", "ll_fb", "now", (), ("Q1", "ll_t_q")) is not None
+
+
+def test_a_timer_hands_its_q_to_the_next_box_in_the_local_it_stores():
+    """LD ``--[TON]--[CTU]--``: the fast code stores the TON's Q into the power-flow local where the body stores
+    Q, instead of reading ``ll_fb.Q`` back after it; the values are IEC's (SFB-17: Q after PT, SFB-13: CU counts
+    rising edges)."""
+    sim = simulation(
+        "PROGRAM Main VAR t : TON; k : CTU; go : BOOL; n : INT; END_VAR\n"
+        "t(IN := go, PT := T#20ms); k(CU := t.Q, PV := 2); n := k.CV; END_PROGRAM",
+    )
+    sim.write("MAIN.GO", True)
+    sim.cycle(1)
+    assert sim.read("MAIN.T.Q") is False
+    sim.run_for(30)
+    assert sim.read("MAIN.T.Q") is True and sim.read("MAIN.K.CV") == 1 and sim.read("MAIN.N") == 1
+    sim.write("MAIN.GO", False)
+    sim.cycle(1)
+    assert sim.read("MAIN.T.Q") is False and sim.read("MAIN.T.ET") == 0
+    sim.write("MAIN.GO", True)
+    sim.run_for(30)
+    assert sim.read("MAIN.K.CV") == 2 and sim.read("MAIN.K.Q") is True
 
 
 def test_a_simulation_pastes_the_body_without_a_class_guard_and_refuses_a_mock():

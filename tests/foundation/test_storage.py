@@ -22,6 +22,7 @@ from ladderlab.storage import (
     atomic,
     load_project_path,
 )
+from ladderlab.storage import workspace as workspace_module
 from tests.support import EXAMPLES
 
 from .strategies import projects
@@ -198,6 +199,37 @@ def test_rename_and_delete(ws: Workspace, motor: Project) -> None:
     stored = ws.load("conveyor")
     assert stored.project.name == "conveyor" and stored.revision == new_revision
     ws.delete("conveyor", new_revision)
+    assert ws.list() == []
+
+
+def test_the_list_reads_again_only_a_project_changed_on_disk(ws: Workspace, motor: Project, monkeypatch) -> None:
+    """``GET /api/projects`` lists every project: a folder unchanged since the last list is not parsed and hashed
+    again, and a change on disk is still seen, whoever made it: a save by another workspace (another server
+    process) or an edit by hand that keeps the file's size."""
+    revision = ws.create(motor)
+    loads: list[str] = []
+    read = workspace_module.read_project_folder
+    monkeypatch.setattr(
+        workspace_module, "read_project_folder", lambda folder: loads.append(folder.name) or read(folder)
+    )
+    [first] = ws.list()
+    assert (first.revision, first.pou_count, loads) == (revision, 3, ["motor"])
+    assert ws.list() == [first] and loads == ["motor"]
+
+    saved = Workspace(ws.root).save(motor.model_copy(update={"pous": motor.pous[:2]}), revision)
+    [listed] = ws.list()
+    assert (listed.revision, listed.pou_count, len(loads)) == (saved, 2, 3)  # (the save read its base revision)
+
+    blinker = ws.root / "motor" / "pous" / "Blinker.st"
+    text = blinker.read_text()
+    blinker.write_text(text.replace("(* full on/off cycle *)", "(* full on/off cycles*)"))
+    moved = blinker.stat().st_mtime_ns + 1_000_000_000  # (as an edit a second later: see Workspace._fingerprint)
+    os.utime(blinker, ns=(moved, moved))
+    [edited] = ws.list()
+    assert edited.revision == ws.load("motor").revision not in (revision, saved)
+    assert ws.list() == [edited] and len(loads) == 5  # the list's read and the load above
+
+    shutil.rmtree(ws.root / "motor")
     assert ws.list() == []
 
 

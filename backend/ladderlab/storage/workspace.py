@@ -6,6 +6,7 @@ import contextlib
 import os
 import secrets
 import shutil
+import stat
 import threading
 from collections.abc import Iterator
 from contextlib import contextmanager
@@ -65,6 +66,8 @@ class Workspace:
         self.root.mkdir(parents=True, exist_ok=True)
         self._locks_guard = threading.Lock()
         self._name_locks: dict[str, threading.Lock] = {}
+        #: ``list``'s entries by project name, each with the fingerprint of the folder it was read from
+        self._listed: dict[str, tuple[tuple[object, ...], ProjectInfo]] = {}
         self.recover()
 
     def folder(self, name: str) -> Path:
@@ -101,21 +104,34 @@ class Workspace:
         )
 
     def list(self) -> list[ProjectInfo]:
-        """Every project folder by name; one that does not load is listed with its problems."""
-        infos = []
+        """Every project folder by name; one that does not load is listed with its problems.
+
+        A project is loaded (parsed and hashed) only when its folder changed since the last list: its entry is kept
+        with the folder's fingerprint (``_fingerprint``), and taken again while the fingerprint is the same."""
+        infos, listed = [], {}
         for name in self.names():
             child = self.root / name
-            try:
-                stored = self.load(child.name)
-            except StorageError as error:
-                infos.append(ProjectInfo(child.name, None, _modified(child), 0, error.diagnostics))
-                continue
-            except OSError as error:
-                problem = Diagnostic(code="BAD-FILE", message=f"cannot be read: {error.strerror or error}")
-                infos.append(ProjectInfo(child.name, None, _modified(child), 0, [problem]))
-                continue
-            infos.append(ProjectInfo(child.name, stored.revision, stored.modified, len(stored.project.pous)))
+            before = _fingerprint(child)
+            known = self._listed.get(name)
+            if before is not None and known is not None and known[0] == before:
+                info = known[1]
+            else:
+                info = self._info(child)
+            if before is not None and _fingerprint(child) == before:  # (unchanged while it was read)
+                listed[name] = (before, info)
+            infos.append(info)
+        self._listed = listed
         return infos
+
+    def _info(self, child: Path) -> ProjectInfo:
+        try:
+            stored = self.load(child.name)
+        except StorageError as error:
+            return ProjectInfo(child.name, None, _modified(child), 0, error.diagnostics)
+        except OSError as error:
+            problem = Diagnostic(code="BAD-FILE", message=f"cannot be read: {error.strerror or error}")
+            return ProjectInfo(child.name, None, _modified(child), 0, [problem])
+        return ProjectInfo(child.name, stored.revision, stored.modified, len(stored.project.pous))
 
     def load(self, name: str) -> StoredProject:
         with self._locked(name):
@@ -253,6 +269,34 @@ def _remove_if_empty(folder: Path) -> None:
     """Remove a project folder a crash left without any file (a create that never committed)."""
     with contextlib.suppress(OSError):
         folder.rmdir()
+
+
+def _fingerprint(folder: Path) -> tuple[object, ...] | None:
+    """``folder`` and everything under it, each with its inode, size and modification and status change times
+    (ns; the latter changes with permissions too): what a load reads, so an equal fingerprint means an equal load
+    (a save writes files by rename: new inodes). None when a load must not be skipped: a journal of an interrupted
+    save (the load finishes it), a symbolic link (its target may change without the folder changing), a folder
+    that cannot be listed."""
+    if (folder / journal.JOURNAL).exists():
+        return None
+    entries: list[object] = []
+
+    def add(path: str) -> bool:
+        try:
+            found = os.lstat(path)
+        except OSError:
+            return False
+        entries.append((path, found.st_ino, found.st_size, found.st_mtime_ns, found.st_ctime_ns))
+        return not stat.S_ISLNK(found.st_mode)
+
+    unlisted: list[OSError] = []
+    if not add(str(folder)):
+        return None
+    for place, folders, files in os.walk(folder, onerror=unlisted.append):
+        folders.sort()
+        if not all(add(os.path.join(place, name)) for name in (*folders, *sorted(files))):
+            return None
+    return None if unlisted else tuple(entries)
 
 
 def _modified(folder: Path) -> float:

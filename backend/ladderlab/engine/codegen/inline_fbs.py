@@ -36,10 +36,14 @@ class _NotInlinable(Exception):
 
 
 @functools.lru_cache(maxsize=4096)
-def inline_body(fb: str, instance: str, now: str, known: tuple[tuple[str, str], ...] = ()) -> tuple[str, ...] | None:
+def inline_body(
+    fb: str, instance: str, now: str, known: tuple[tuple[str, str], ...] = (), output: tuple[str, str] | None = None
+) -> tuple[str, ...] | None:
     """The lines of standard FB ``fb``'s ``execute`` acting on the local ``instance`` at clock ``now`` (None: not
     inlinable), indented from column 0. ``known``: (input, code) pairs, the code of a local or a constant the input
-    was just assigned, read in its place (an input the body assigns itself is read from the instance)."""
+    was just assigned, read in its place (an input the body assigns itself is read from the instance). ``output``:
+    (output, local) to also hold the output in that local when the body ends (``_output_copied``; None when the
+    body cannot)."""
     cls = STANDARD_FBS.get(fb.upper())
     if cls is None:
         return None
@@ -60,7 +64,97 @@ def inline_body(fb: str, instance: str, now: str, known: tuple[tuple[str, str], 
         return None
     body = [_KnownInputs(instance, dict(known), _assigned_attributes(body, instance)).visit(s) for s in body]
     body = _propagated(body)
+    if output is not None:
+        copied = _output_copied(body, instance, *output)
+        if copied is None:
+            return None
+        body = copied
     return tuple(ast.unparse(ast.Module(body=body or [ast.Pass()], type_ignores=[])).splitlines())
+
+
+def _output_copied(body: list[ast.stmt], instance: str, pin: str, local: str) -> list[ast.stmt] | None:
+    """``body`` storing the output ``pin`` into ``local`` too wherever it stores it (``ll_fb._running = ll_fb.Q =
+    ll_t___P_3 = False``; ``ll_fb.Q, ll_fb.ET = (True, 100)`` becomes ``ll_t___P_3 = ll_fb.Q = True`` then
+    ``ll_fb.ET = 100``), so the copy after the body (``ll_t___P_3 = ll_fb.Q``, a TON's Q into the next box) reads
+    nothing again. None unless every path through the body stores the output (else the local would keep an older
+    value) and the body never mentions ``local`` (it could read it as an input after the store)."""
+    if any(isinstance(node, ast.Name) and node.id == local for s in body for node in ast.walk(s)):
+        return None
+    if not _always_stores(body, instance, pin):
+        return None
+    try:
+        return _with_copies(body, instance, pin, local)
+    except _NotInlinable:
+        return None
+
+
+def _is_pin(node: ast.expr, instance: str, pin: str) -> bool:
+    return (
+        isinstance(node, ast.Attribute)
+        and node.attr == pin
+        and isinstance(node.value, ast.Name)
+        and node.value.id == instance
+    )
+
+
+def _place(node: ast.AST) -> str | None:
+    """``ll_fb.Q`` or ``ll_s_x`` for an attribute of a name or a name, stored or read alike; else None."""
+    if isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name):
+        return f"{node.value.id}.{node.attr}"
+    return node.id if isinstance(node, ast.Name) else None
+
+
+def _stores_pin(statement: ast.stmt, instance: str, pin: str) -> bool:
+    """Whether ``statement`` itself (an assignment, not a branch inside it) stores the output."""
+    if not isinstance(statement, ast.Assign):
+        return False
+    targets = [e for t in statement.targets for e in (t.elts if isinstance(t, ast.Tuple) else [t])]
+    return any(_is_pin(target, instance, pin) for target in targets)
+
+
+def _always_stores(body: list[ast.stmt], instance: str, pin: str) -> bool:
+    return any(
+        _stores_pin(s, instance, pin)
+        or (isinstance(s, ast.If) and _always_stores(s.body, instance, pin) and _always_stores(s.orelse, instance, pin))
+        for s in body
+    )
+
+
+def _with_copies(body: list[ast.stmt], instance: str, pin: str, local: str) -> list[ast.stmt]:
+    """The statements of ``body`` with ``local`` stored next to every store of the output (``_output_copied``)."""
+    done: list[ast.stmt] = []
+    for statement in body:
+        if isinstance(statement, ast.If):
+            statement.body = _with_copies(statement.body, instance, pin, local)
+            statement.orelse = _with_copies(statement.orelse, instance, pin, local)
+        elif _stores_pin(statement, instance, pin):
+            assert isinstance(statement, ast.Assign)
+            if len(statement.targets) == 1 and isinstance(statement.targets[0], ast.Tuple):
+                done.extend(_split(statement, instance, pin, local))
+                continue
+            statement.targets.append(ast.Name(id=local, ctx=ast.Store()))
+        elif any(
+            isinstance(node, ast.Attribute) and _is_pin(node, instance, pin) and not isinstance(node.ctx, ast.Load)
+            for node in ast.walk(statement)
+        ):
+            raise _NotInlinable("the output stored in another way")  # (``+=``, in a loop)
+        done.append(statement)
+    return [ast.fix_missing_locations(s) for s in done]
+
+
+def _split(statement: ast.Assign, instance: str, pin: str, local: str) -> list[ast.stmt]:
+    """A tuple assignment storing the output as one assignment per target, the output's with ``local`` too: exact
+    when no value reads an attribute the assignment stores (the body's values read locals, constants and the
+    instance's attributes, and compute nothing that can fault)."""
+    pairs = _pairs(statement.targets[0], statement.value)
+    stored = {_place(target) for target, _ in pairs}
+    if len(pairs) < 2 or any(_place(node) in stored for _, value in pairs for node in ast.walk(value)):
+        raise _NotInlinable("a tuple assignment reading what it stores")
+    split = []
+    for target, value in pairs:
+        targets = [target, ast.Name(id=local, ctx=ast.Store())] if _is_pin(target, instance, pin) else [target]
+        split.append(ast.Assign(targets=targets, value=value))
+    return split
 
 
 class _KnownInputs(ast.NodeTransformer):

@@ -74,6 +74,9 @@ class Statements:
         #: the last line of an inlined FB body when it stores an output: (its source, line index, ``ll_fb.Q``, the
         #: value stored)
         self._output_line: tuple[Source, int, str, str] | None = None
+        #: the last inlined FB body (``_output_into``): its source, first line index, line count after it, FB type,
+        #: known inputs, indentation depth and origin
+        self._inline_lines: tuple[Source, int, int, str, tuple[tuple[str, str], ...], int, int | None] | None = None
         self.deferred = deferred  # id() of the probes read after the scan (deferred.py)
         self.reads: list[str] = []  # their ``ll_pr[i] = value`` lines, for the chunk's ll_read_probes part
         self._line: int | None = None
@@ -305,12 +308,13 @@ class Statements:
                 self.probes.aliases[index] = source  # type: ignore[union-attr]  # a probe was just recorded
                 self.src.line(f"{code} = {value}  # ll_pr[{index}] is ll_pr[{source}]  # {comment}")
             else:
-                self.src.line(f"ll_pr[{index}] = {code} = {value}  # {comment}")
+                stored = code if self._output_into(code, value) else f"{code} = {value}"
+                self.src.line(f"ll_pr[{index}] = {stored}  # {comment}")
                 if code in self.temps:
                     self._probed_temp = (self.src, len(self.src.lines), self.group, code, index)
             self._fused = True
             self._paused(probe)
-        elif self._chained(code, value):
+        elif self._chained(code, value) or (probe is None and self._output_into(code, value)):
             return
         else:
             self.src.line(f"{code} = {value}")
@@ -346,7 +350,27 @@ class Statements:
         line = self.src.lines[held[1]]
         indent = line[: len(line) - len(line.lstrip())]
         self.src.lines[held[1]] = f"{indent}{code} = {value} = {held[3]}"
-        self._output_line = None
+        self._output_line = self._inline_lines = None  # (the body is no longer as inline_body wrote it)
+        return True
+
+    def _output_into(self, code: str, value: str) -> bool:
+        """``code = value`` done by the inlined FB body just emitted when ``code`` is a temporary local and ``value``
+        an output of that body's instance (``ll_t___P_3 = ll_fb.Q`` after a TON): the body is emitted again storing
+        the output into the local wherever it stores it (``inline_fbs._output_copied``), sparing the read of the
+        output. Exact: nothing runs between the body and the copy, and the local then holds what the output holds."""
+        held = self._inline_lines
+        if held is None or held[0] is not self.src or len(self.src.lines) != held[2] or code not in self.temps:
+            return False
+        pin = value.removeprefix("ll_fb.")
+        if pin == value or not pin.isidentifier():
+            return False
+        src, first, _, fb, known, depth, origin = held
+        lines = inline_body(fb, "ll_fb", self.now, known, (pin, code))
+        if lines is None:
+            return False
+        src.lines[first:] = ["    " * depth + line if line else "" for line in lines]
+        src.line_origins[first:] = [origin] * len(lines)
+        self._inline_lines = self._output_line = None
         return True
 
     def store(self, target: ir.Var, value: ir.Expr, probe: ir.Probe | None = None) -> None:
@@ -739,11 +763,15 @@ class Statements:
             if s.body is not None:
                 self._base_body(fb, s.body)
             elif inline is not None and not self.module.program.mockable:  # the body of its execute (inline_fbs.py)
+                first = len(self.src.lines)
                 for line in inline:
                     self.src.line(line)
                 last = _OUTPUT_STORE.fullmatch(inline[-1])
-                if last is not None and s.en is None and self.probes is None:
-                    self._output_line = (self.src, len(self.src.lines) - 1, last[1], last[2])
+                if s.en is None:
+                    if last is not None and self.probes is None:
+                        self._output_line = (self.src, len(self.src.lines) - 1, last[1], last[2])
+                    where = (self.src.depth, self.src.origin)
+                    self._inline_lines = (self.src, first, len(self.src.lines), ty.fb, tuple(known), *where)
             elif inline is not None:  # a unit test may mock the instance: the body for the FB's own class only
                 self.src.line(f"if {fb}.__class__ is {names.std_fb(ty.fb.upper())}:")
                 with self.src.indent():
