@@ -178,6 +178,7 @@ def emit_inits(
         src.line("if warm:")
         with src.indent():
             src.line(f"{target(place)}.ll_init(True)")
+            _declared_again(module, target(place), place.slot.type, place.slot.initial, src)
         src.line("else:")
         with src.indent():
             value = _init_value(module, place.slot, owner)
@@ -192,6 +193,28 @@ def emit_inits(
             src.line(f"{target(place)}.ll_init({'False' if place.slot.retain else 'warm'})")
     if len(src.lines) == before:
         src.line("pass")
+
+
+def _declared_again(module: ModuleContext, target: str, ty: t.IrType, initial: object, src: Source) -> None:
+    """After a warm restart re-initialised the instance ``target`` in place with its FB's values (its RETAIN
+    variables keep theirs), the values its declaration gives the others (``fb : F := (x := 1)``), as a cold start
+    makes it with them."""
+    user = module.user_fb(ty.fb) if isinstance(ty, t.FbInstance) else None
+    if user is None or not isinstance(initial, tuple):
+        return
+    layout = module.layouts[user.name.upper()]
+    for name, value in initial:
+        place = layout.get(name)
+        if place is None or place.page or place.slot.retain:
+            continue  # (a cold start reports what it cannot make)
+        member = f"{target}.{place.attr}"
+        if _user_fb(module, place.slot.type):
+            _declared_again(module, member, place.slot.type, value, src)
+            continue
+        try:
+            src.line(f"{member} = {construct(place.slot.type, value, module)}")
+        except CodegenError:
+            continue
 
 
 def _plain_inits(module: ModuleContext, places: list, target, owner: str, src: Source) -> None:
