@@ -673,3 +673,26 @@ END_FUNCTION_BLOCK
     project.pous[0].declarations = "{attribute 'call_after_init'}\n" + project.pous[0].declarations
     built = [d.format() for d in build_project(project).diagnostics if d.code == "IR-UNSUPPORTED"]
     assert built == [f"FB_Motor/declarations:1:1, POU FB_Motor: error IR-UNSUPPORTED: {message}"]
+
+
+def test_structured_values_of_the_declaration_come_after_fb_init_too():
+    # a standard FB's input, a STRING, an array's element and a STRUCT's member set by the declaration: FB_init sees
+    # F's own values (PT T#0s as TON declares it, 'own', 3, y 2), then the declaration's are assigned
+    sim = run(
+        """TYPE Pt : STRUCT x : REAL := 1.5; y : INT := 2; END_STRUCT END_TYPE
+FUNCTION_BLOCK F
+VAR_INPUT t : TON; s : STRING := 'own'; arr : ARRAY [0..2] OF INT := [1, 2, 3]; p : Pt; END_VAR
+VAR_OUTPUT seenPT : TIME; seenS : STRING; seenArr : INT; seenY : INT; END_VAR
+METHOD FB_init : BOOL
+VAR_INPUT bInitRetains : BOOL; bInCopyCode : BOOL; END_VAR
+seenPT := t.PT; seenS := s; seenArr := arr[2]; seenY := p.y;
+s := 'init';
+END_METHOD
+END_FUNCTION_BLOCK
+PROGRAM Main
+VAR fb : F := (t := (PT := T#1s), s := 'decl', arr := [9], p := (y := 5)); END_VAR
+END_PROGRAM
+"""
+    )
+    assert [sim.read(f"Main.fb.{v}") for v in ("seenPT", "seenS", "seenArr", "seenY")] == [0, "own", 3, 2]
+    assert [sim.read(f"Main.fb.{v}") for v in ("t.PT", "s", "arr[0]", "p.x", "p.y")] == [1000, "decl", 9, 1.5, 5]

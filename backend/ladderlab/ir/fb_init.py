@@ -182,9 +182,9 @@ class _Values:
         or (``restore``) back to its initial value where ``item`` would set it."""
         pou = self.program.pous.get(fb)
         if pou is not None:
-            slot = next(s for s in pou.slots if s.name == name)
-            if self.warm and slot.retain:
-                return []
+            slot = next((s for s in pou.slots if s.name == name), None)
+            if slot is None or (self.warm and slot.retain):
+                return []  # (one the FB lacks: making the instance reports it, engine/codegen/constructors.py)
             ty, initial = slot.type, slot.initial
         else:
             block = stdlib.function_block(fb)
