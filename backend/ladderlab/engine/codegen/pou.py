@@ -2,7 +2,8 @@
 
 An instance class has ``__slots__`` for its variables, ``ll_init(warm)``
 (cold: everything to its initial value; warm: RETAIN slots keep theirs, user
-FB instances are re-initialised in place so their own RETAIN slots survive)
+FB instances are re-initialised in place so their own RETAIN slots survive, then
+get their declaration's values again)
 and ``execute(now)``: the same protocol as the standard FBs (set inputs,
 execute with the scan's clock, read outputs). VAR_TEMP slots are re-initialised
 at every call. A FUNCTION is a Python function of its inputs (then its
