@@ -491,3 +491,208 @@ def test_a_tests_instance_holding_one_with_fb_init_says_so_too():
         "tests/unit.st:2:5: warning ST-DECL: F's FB_init does not run for a test's variables: the instances keep "
         "their declared values"
     ]
+
+
+# The instance declaration's own initialisation after FB_init (issue 25b). CODESYS's "Attribute: call_after_init"
+# page lists how ``fbDoIt : FB_DoIt := (in1 := 99);`` is processed: ``fbDoIt.FB_Init(); fbDoIt.in1 := 99;`` (then
+# the call_after_init method); Beckhoff's FB_init page ("Observe the order of initialization"): the values the
+# declaration assigns to the FB's inputs are assigned after FB_init. So FB_init sees the FB's own initial values (in1 is
+# 5 in FB_DoIt), what it writes to a variable the declaration initialises is overwritten, and what it writes to the
+# others stays.
+DO_IT = """FUNCTION_BLOCK FB_DoIt
+VAR_INPUT in1 : INT := 5; END_VAR
+VAR_OUTPUT seen : INT := -1; other : INT; fromN : INT; END_VAR
+METHOD FB_init : BOOL
+VAR_INPUT bInitRetains : BOOL; bInCopyCode : BOOL; n : INT := 1; END_VAR
+seen := in1;
+in1 := in1 + 100;
+other := 42;
+fromN := n;
+END_METHOD
+in1 := in1 + 1;
+END_FUNCTION_BLOCK
+"""
+
+
+def _do_it(sim, path: str) -> list:
+    return [sim.read(f"{path}.{v}") for v in ("in1", "seen", "other", "fromN")]
+
+
+def test_the_declarations_initialisation_is_assigned_after_fb_init_as_codesys_lists_it():
+    sim = run(
+        DO_IT
+        + """TYPE Holder : STRUCT f : FB_DoIt := (in1 := 7); END_STRUCT END_TYPE
+PROGRAM Main
+VAR
+    fbDoIt : FB_DoIt := (in1 := 99);
+    withArgs : FB_DoIt(n := 3) := (in1 := 98);
+    plain : FB_DoIt;
+    arr : ARRAY [0..1] OF FB_DoIt := [(in1 := 1), (in1 := 2)];
+    h : Holder;
+    h2 : Holder := (f := (in1 := 8));
+END_VAR
+fbDoIt();
+withArgs();
+END_PROGRAM
+"""
+    )
+    # FB_init saw in1 = 5 (FB_DoIt's own), then the declaration's value replaced its 105; other stays 42
+    assert _do_it(sim, "Main.fbDoIt") == [99, 5, 42, 1]
+    assert _do_it(sim, "Main.withArgs") == [98, 5, 42, 3]
+    assert _do_it(sim, "Main.plain") == [105, 5, 42, 1]  # no initialisation of its own: FB_init's value stays
+    assert _do_it(sim, "Main.arr[0]") == [1, 5, 42, 1]
+    assert _do_it(sim, "Main.arr[1]") == [2, 5, 42, 1]
+    assert _do_it(sim, "Main.h.f") == [7, 5, 42, 1]  # the STRUCT's declaration of its member
+    assert _do_it(sim, "Main.h2.f") == [8, 5, 42, 1]  # the variable's, which replaces the STRUCT's
+    for scan in range(1, 3):  # scan by scan only the bodies run
+        sim.cycle(1)
+        assert _do_it(sim, "Main.fbDoIt") == [99 + scan, 5, 42, 1], scan
+        assert _do_it(sim, "Main.withArgs") == [98 + scan, 5, 42, 3], scan
+        assert sim.read("Main.arr[0].in1") == 1, scan
+
+
+def test_a_warm_or_cold_restart_initialises_in_the_same_order_and_retain_variables_keep_their_values():
+    sim = run(
+        """FUNCTION_BLOCK Counter
+VAR_INPUT start : INT := 5; END_VAR
+VAR_OUTPUT seen : INT; seenKept : INT; END_VAR
+VAR RETAIN kept : INT := 1; END_VAR
+METHOD FB_init : BOOL
+VAR_INPUT bInitRetains : BOOL; bInCopyCode : BOOL; END_VAR
+seen := start;
+seenKept := kept;
+start := 0;
+kept := kept + 1000;
+END_METHOD
+start := start + 1;
+kept := kept + 1;
+END_FUNCTION_BLOCK
+FUNCTION_BLOCK Plain
+VAR_INPUT x : INT := 5; END_VAR
+x := x + 1;
+END_FUNCTION_BLOCK
+PROGRAM Main
+VAR c : Counter := (start := 20, kept := 50); p : Plain := (x := 2); END_VAR
+c();
+p();
+END_PROGRAM
+"""
+    )
+    # cold start: FB_init saw the FB's own values (5 and 1), the declaration's came after it
+    assert [sim.read(f"Main.c.{v}") for v in ("start", "kept", "seen", "seenKept")] == [20, 50, 5, 1]
+    sim.cycle(2)
+    assert [sim.read(v) for v in ("Main.c.start", "Main.c.kept", "Main.p.x")] == [22, 52, 4]
+    # warm restart: the same order for start; kept is RETAIN and keeps 52 (FB_init sees it and adds 1000, and the
+    # declaration's 50 is not assigned again); p (no FB_init) gets its declaration's 2 again, not Plain's 5
+    sim.reset(cold=False)
+    assert [sim.read(f"Main.c.{v}") for v in ("start", "kept", "seen", "seenKept")] == [20, 1052, 5, 52]
+    assert sim.read("Main.p.x") == 2
+    sim.cycle(1)
+    assert [sim.read(v) for v in ("Main.c.start", "Main.c.kept", "Main.p.x")] == [21, 1053, 3]
+    sim.reset(cold=True)  # a cold restart as the first start
+    assert [sim.read(f"Main.c.{v}") for v in ("start", "kept", "seen", "seenKept")] == [20, 50, 5, 1]
+    assert sim.read("Main.p.x") == 2
+
+
+def test_an_instance_inside_is_initialised_with_its_declaration_before_the_outer_fb_init_and_the_outer_one_after():
+    # CODESYS makes an instance's own instances completely (FB_init, then their declaration's values) before its
+    # FB_init runs; the outer declaration's values for them come after it, and only the variables it names
+    sim = run(
+        """FUNCTION_BLOCK G
+VAR_INPUT a : INT := 5; b : INT := 6; END_VAR
+VAR_OUTPUT seenA : INT; END_VAR
+METHOD FB_init : BOOL
+VAR_INPUT bInitRetains : BOOL; bInCopyCode : BOOL; END_VAR
+seenA := a;
+END_METHOD
+END_FUNCTION_BLOCK
+FUNCTION_BLOCK F
+VAR_INPUT inner : G := (a := 7); END_VAR
+VAR_OUTPUT seenA : INT; seenB : INT; END_VAR
+METHOD FB_init : BOOL
+VAR_INPUT bInitRetains : BOOL; bInCopyCode : BOOL; END_VAR
+seenA := inner.a;
+seenB := inner.b;
+END_METHOD
+END_FUNCTION_BLOCK
+PROGRAM Main
+VAR fb : F := (inner := (b := 2)); END_VAR
+END_PROGRAM
+"""
+    )
+    # G's FB_init saw its own a (5); F's saw inner as F declares it (a 7, b 6); then Main's b := 2, a stays 7
+    assert [sim.read(f"Main.fb.inner.{v}") for v in ("a", "b", "seenA")] == [7, 2, 5]
+    assert [sim.read(f"Main.fb.{v}") for v in ("seenA", "seenB")] == [7, 6]
+
+
+@fuzz_settings(fast=10)
+@given(own=st.integers(-1000, 1000), declared=st.integers(-1000, 1000), added=st.integers(-1000, 1000))
+def test_fb_init_sees_the_fbs_own_value_and_the_declarations_value_wins(own, declared, added):
+    """Whatever the FB's own initial value, the declaration's and what FB_init adds: FB_init sees the FB's own value,
+    the variable ends with the declaration's, and the variable FB_init writes alone keeps what FB_init wrote."""
+    sim = run(
+        f"""FUNCTION_BLOCK F
+VAR_INPUT v : INT := {own}; END_VAR
+VAR_OUTPUT seen : INT; w : INT; END_VAR
+METHOD FB_init : BOOL
+VAR_INPUT bInitRetains : BOOL; bInCopyCode : BOOL; END_VAR
+seen := v;
+v := v + {added};
+w := v;
+END_METHOD
+END_FUNCTION_BLOCK
+PROGRAM Main
+VAR f : F := (v := {declared}); END_VAR
+END_PROGRAM
+"""
+    )
+    assert [sim.read(f"Main.f.{n}") for n in ("v", "seen", "w")] == [declared, own, own + added]
+
+
+def test_call_after_init_is_a_located_error_not_a_method_silently_left_uncalled():
+    # CODESYS calls a method marked {attribute 'call_after_init'} after the declaration's values ("Attribute:
+    # call_after_init"); LadderLab does not, so a program relying on it is refused where the attribute stands
+    text = """{attribute 'call_after_init'}
+FUNCTION_BLOCK FB_DoIt
+VAR_INPUT in1 : INT; END_VAR
+VAR_OUTPUT after : INT; END_VAR
+    {attribute 'call_after_init'}
+METHOD FB_AfterInit : BOOL
+after := in1; // {attribute 'call_after_init'} in a comment is none
+END_METHOD
+END_FUNCTION_BLOCK
+"""
+    _, diagnostics = source_to_project(text, "oo")
+    message = (
+        "LadderLab does not call a method marked {attribute 'call_after_init'} after the instance is initialised, as "
+        "CODESYS does: call the method from the program (on its first scan) and remove the attribute"
+    )
+    found = [(d.severity, d.code, d.line, d.column, d.end_column, d.message) for d in diagnostics]
+    assert found == [("error", "IR-UNSUPPORTED", 1, 1, 30, message), ("error", "IR-UNSUPPORTED", 5, 5, 34, message)]
+    project, _ = source_to_project(MOTOR, "oo")
+    project.pous[0].declarations = "{attribute 'call_after_init'}\n" + project.pous[0].declarations
+    built = [d.format() for d in build_project(project).diagnostics if d.code == "IR-UNSUPPORTED"]
+    assert built == [f"FB_Motor/declarations:1:1, POU FB_Motor: error IR-UNSUPPORTED: {message}"]
+
+
+def test_structured_values_of_the_declaration_come_after_fb_init_too():
+    # a standard FB's input, a STRING, an array's element and a STRUCT's member set by the declaration: FB_init sees
+    # F's own values (PT T#0s as TON declares it, 'own', 3, y 2), then the declaration's are assigned
+    sim = run(
+        """TYPE Pt : STRUCT x : REAL := 1.5; y : INT := 2; END_STRUCT END_TYPE
+FUNCTION_BLOCK F
+VAR_INPUT t : TON; s : STRING := 'own'; arr : ARRAY [0..2] OF INT := [1, 2, 3]; p : Pt; END_VAR
+VAR_OUTPUT seenPT : TIME; seenS : STRING; seenArr : INT; seenY : INT; END_VAR
+METHOD FB_init : BOOL
+VAR_INPUT bInitRetains : BOOL; bInCopyCode : BOOL; END_VAR
+seenPT := t.PT; seenS := s; seenArr := arr[2]; seenY := p.y;
+s := 'init';
+END_METHOD
+END_FUNCTION_BLOCK
+PROGRAM Main
+VAR fb : F := (t := (PT := T#1s), s := 'decl', arr := [9], p := (y := 5)); END_VAR
+END_PROGRAM
+"""
+    )
+    assert [sim.read(f"Main.fb.{v}") for v in ("seenPT", "seenS", "seenArr", "seenY")] == [0, "own", 3, 2]
+    assert [sim.read(f"Main.fb.{v}") for v in ("t.PT", "s", "arr[0]", "p.x", "p.y")] == [1000, "decl", 9, 1.5, 5]

@@ -113,3 +113,32 @@ def test_the_st_export_prints_the_arguments_and_runs_the_same():
     again, diagnostics = source_to_project(exported, "again")
     assert diagnostics == []
     assert values(again) == EXPECTED
+
+
+def test_a_codesys_method_marked_call_after_init_is_refused_at_the_import():
+    """CODESYS keeps ``{attribute 'call_after_init'}`` in its attributes entry of the method's interface ("Attribute:
+    call_after_init": the method is called after the instance's initialisation); LadderLab never calls it, so the
+    import says so at the method instead of dropping the attribute."""
+    tc6 = "http://www.plcopen.org/xml/tc6_0201"
+    root = ET.fromstring(export_plcopen(project()))
+    method = root.find(f".//{{{tc6}}}Method[@name='FB_reinit']")
+    interface = method.find(f"{{{tc6}}}interface")
+    if interface is None:
+        interface = ET.SubElement(method, f"{{{tc6}}}interface")
+    data = ET.SubElement(
+        ET.SubElement(interface, f"{{{tc6}}}addData"),
+        f"{{{tc6}}}data",
+        {"name": "http://www.3s-software.com/plcopenxml/attributes", "handleUnknown": "implementation"},
+    )
+    ET.SubElement(ET.SubElement(data, f"{{{tc6}}}Attributes"), f"{{{tc6}}}Attribute", {"Name": "call_after_init"})
+    imported = import_plcopen(without_ladderlab_data(ET.tostring(root)))
+    found = [(d.severity, d.code, d.pou, d.message) for d in imported.diagnostics if d.code == "IR-UNSUPPORTED"]
+    assert found == [
+        (
+            "error",
+            "IR-UNSUPPORTED",
+            "F",
+            "LadderLab does not call a method marked {attribute 'call_after_init'} after the instance is initialised, "
+            "as CODESYS does: call the method from the program (on its first scan) and remove the attribute",
+        )
+    ]

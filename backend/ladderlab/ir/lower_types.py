@@ -406,6 +406,20 @@ def engine_value(raw: object, target: IrType) -> object:
     return store_fn(target.name)(int(raw))  # type: ignore[call-overload]
 
 
+def merged_initial(ty: IrType, own: object, given: object) -> object:
+    """The initial value of a variable of ``ty`` whose own declaration gives it ``own`` and a declaration around it
+    ``given`` (None: nothing). An instance's are ``(NAME, value)`` pairs (in F, ``inner : G := (a := 7)``, around it
+    ``fb : F := (inner := (b := 2))``): the variables ``given`` names take its values, the others keep ``own``'s, as
+    CODESYS assigns only the variables an initialisation names."""
+    if given is None:
+        return own
+    if not isinstance(ty, FbInstance) or not isinstance(own, tuple) or not isinstance(given, tuple):
+        return given
+    pairs = dict(own)
+    pairs.update(given)
+    return tuple(pairs.items())
+
+
 def ir_default(type: IrType) -> object:
     """The default value of an IR type (TYP-05): 0, FALSE, '', a subrange's lower limit, the first enum value."""
     if isinstance(type, Elementary):

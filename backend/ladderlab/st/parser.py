@@ -28,7 +28,7 @@ from .errors import describe_unexpected, last_token, literal_problem, would_acce
 from .fast_lalr import NotFast, fast_parse
 from .lark_cache import cached_lark
 from .nesting import too_deep
-from .pragmas import attach_pack_modes, misplaced_pack_modes
+from .pragmas import attach_pack_modes, misplaced_pack_modes, unsupported_pragmas
 from .quick_decls import DEPTH as QUICK_DEPTH
 from .quick_decls import quick_declarations
 from .transformer import AstBuilder, StSyntaxError
@@ -250,6 +250,7 @@ def _finish(
     result: ParseResult, original: str, file: str | None = None, pou: str | None = None, depth: int | None = None
 ) -> ParseResult:
     """``depth``: how deeply the AST is known to nest (expression levels; no statements), when it is."""
+    result.diagnostics += unsupported_pragmas(original, file, pou)
     if result.ast is not None and (
         depth > limits.EXPRESSION_DEPTH.value if depth is not None else _may_nest_too_deep(result, original)
     ):

@@ -1,4 +1,5 @@
-"""CODESYS's ``{attribute 'pack_mode' := 'N'}``, the one pragma that changes what a program computes here.
+"""CODESYS's ``{attribute 'pack_mode' := 'N'}``, the one pragma that changes what a program computes here (and
+``{attribute 'call_after_init'}``, which would, refused: ``unsupported_pragmas``).
 
 The lexer skips every pragma (``%ignore PRAGMA``); this pass finds the pack_mode ones in the text and gives each
 to the TYPE declaration it stands above (``TypeDecl.pack_mode``), as CODESYS places it: "Insert location: above
@@ -20,6 +21,12 @@ from typing import Any
 from ..model.diagnostics import Diagnostic
 from . import ast
 
+#: Why ``{attribute 'call_after_init'}`` is refused (IR-UNSUPPORTED), wherever it is found (the PLCopen import too)
+CALL_AFTER_INIT_REFUSED = (
+    "LadderLab does not call a method marked {attribute 'call_after_init'} after the instance is initialised, as "
+    "CODESYS does: call the method from the program (on its first scan) and remove the attribute"
+)
+_CALL_AFTER_INIT = re.compile(r"\{\s*attribute\s+'call_after_init'\s*\}", re.IGNORECASE)
 _PACK_MODE = re.compile(r"\{\s*attribute\s+'pack_mode'\s*:=\s*'([^']*)'\s*\}", re.IGNORECASE)
 # What the lexer skips too: strings are jumped over, a pragma is captured (group 1)
 _LEXED = re.compile(r"'(?:[^'$\n]|\$.)*'|\"(?:[^\"$\n]|\$.)*\"|\(\*[\s\S]*?\*\)|/\*[\s\S]*?\*/|//[^\n]*|(\{[^}]*\})")
@@ -94,11 +101,43 @@ def _misplaced(pragma: re.Match[str], starts: list[int], file: str | None, pou: 
     )
 
 
+def unsupported_pragmas(text: str, file: str | None = None, pou: str | None = None) -> list[Diagnostic]:
+    """The error IR-UNSUPPORTED at each ``{attribute 'call_after_init'}`` of ``text``: CODESYS calls a method marked
+    so after an instance's initialisation ("Attribute: call_after_init"), which LadderLab does not do yet, so a program
+    relying on it would run with other values than CODESYS's (docs/st.md, "FB_init and FB_exit")."""
+    if "call_after_init" not in text.lower():
+        return []
+    starts = _line_starts(text)
+    out = []
+    for pragma in _pragmas(text, _CALL_AFTER_INIT):
+        line, column = _position(starts, pragma.start())
+        end_line, end_column = _position(starts, pragma.end())
+        out.append(
+            Diagnostic(
+                severity="error",
+                code="IR-UNSUPPORTED",
+                message=CALL_AFTER_INIT_REFUSED,
+                file=file,
+                pou=pou,
+                line=line,
+                column=column,
+                end_line=end_line,
+                end_column=end_column,
+            )
+        )
+    return out
+
+
 def _pack_modes(text: str) -> Iterator[re.Match[str]]:
     """The pack_mode pragmas of ``text`` (matches: the value written is group 1), outside strings and comments."""
+    return _pragmas(text, _PACK_MODE)
+
+
+def _pragmas(text: str, pattern: re.Pattern[str]) -> Iterator[re.Match[str]]:
+    """The pragmas of ``text`` that ``pattern`` matches whole, outside strings and comments."""
     for lexed in _LEXED.finditer(text):
         if lexed.group(1) is not None:
-            pragma = _PACK_MODE.fullmatch(text, lexed.start(1), lexed.end(1))
+            pragma = pattern.fullmatch(text, lexed.start(1), lexed.end(1))
             if pragma is not None:
                 yield pragma
 

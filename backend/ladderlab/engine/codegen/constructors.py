@@ -15,6 +15,7 @@ from functools import lru_cache
 
 from ...ir import nodes as ir
 from ...ir import types as t
+from ...ir.lower_types import merged_initial
 from ...ir.types import describe
 from . import names
 from .context import CodegenError, ModuleContext, std_fb_class, std_pin_type
@@ -28,7 +29,7 @@ def construct(ty: t.IrType, initial: object, module: ModuleContext) -> str:
     if isinstance(ty, t.Struct):
         values = _sequence(initial, ty.name, len(ty.fields))
         overrides = {
-            names.slot(f.name): construct(f.type, value, module)
+            names.slot(f.name): construct(f.type, merged_initial(f.type, f.initial, value), module)
             for f, value in zip(ty.fields, values)
             if value is not None and value != f.initial
         }
@@ -85,6 +86,7 @@ def _instance(ty: t.FbInstance, initial: object, module: ModuleContext) -> str:
             place = layout.get(name)
             if place is None or place.page:
                 raise CodegenError(f"{user.name} has no variable {name} that can be initialised here")
+            value = merged_initial(place.slot.type, place.slot.initial, value)
             overrides[place.attr] = construct(place.slot.type, value, module)
         return _with(f"{names.pou_class(user.name)}()", overrides)
     if std_fb_class(ty.fb) is None:

@@ -2,7 +2,8 @@
 
 An instance class has ``__slots__`` for its variables, ``ll_init(warm)``
 (cold: everything to its initial value; warm: RETAIN slots keep theirs, user
-FB instances are re-initialised in place so their own RETAIN slots survive)
+FB instances are re-initialised in place so their own RETAIN slots survive, then
+get their declaration's values again)
 and ``execute(now)``: the same protocol as the standard FBs (set inputs,
 execute with the scan's clock, read outputs). VAR_TEMP slots are re-initialised
 at every call. A FUNCTION is a Python function of its inputs (then its
@@ -178,6 +179,7 @@ def emit_inits(
         src.line("if warm:")
         with src.indent():
             src.line(f"{target(place)}.ll_init(True)")
+            _declared_again(module, target(place), place.slot.type, place.slot.initial, src)
         src.line("else:")
         with src.indent():
             value = _init_value(module, place.slot, owner)
@@ -192,6 +194,28 @@ def emit_inits(
             src.line(f"{target(place)}.ll_init({'False' if place.slot.retain else 'warm'})")
     if len(src.lines) == before:
         src.line("pass")
+
+
+def _declared_again(module: ModuleContext, target: str, ty: t.IrType, initial: object, src: Source) -> None:
+    """After a warm restart re-initialised the instance ``target`` in place with its FB's values (its RETAIN
+    variables keep theirs), the values its declaration gives the others (``fb : F := (x := 1)``), as a cold start
+    makes it with them."""
+    user = module.user_fb(ty.fb) if isinstance(ty, t.FbInstance) else None
+    if user is None or not isinstance(initial, tuple):
+        return
+    layout = module.layouts[user.name.upper()]
+    for name, value in initial:
+        place = layout.get(name)
+        if place is None or place.page or place.slot.retain:
+            continue  # (a cold start reports what it cannot make)
+        member = f"{target}.{place.attr}"
+        if _user_fb(module, place.slot.type):
+            _declared_again(module, member, place.slot.type, value, src)
+            continue
+        try:
+            src.line(f"{member} = {construct(place.slot.type, value, module)}")
+        except CodegenError:
+            continue
 
 
 def _plain_inits(module: ModuleContext, places: list, target, owner: str, src: Source) -> None:

@@ -27,9 +27,10 @@ from collections.abc import Callable
 from ...model.project import Accessor, Method, MethodAccess, Pou, Property
 from ...st import ast
 from ...st.parser import parse_declarations, parse_source
+from ...st.pragmas import CALL_AFTER_INIT_REFUSED
 from ...st.printer import print_declarations, print_type
 from ...storage.st_text import method_header
-from .vars import parse_type_text, write_documentation, write_type, write_var_list
+from .vars import ATTRIBUTES_DATA, parse_type_text, write_documentation, write_type, write_var_list
 from .xml_io import Reader, body_language, data_entries, formatted_text, info_text, local, sub, text_content
 
 METHOD_DATA = "http://www.3s-software.com/plcopenxml/method"
@@ -339,6 +340,7 @@ def read_methods(
                 continue
             _report_implicit(element, pou, reader)
             interface = reader.child(element, "interface")
+            _report_call_after_init(element, interface, pou, reader)
             text, return_type = declarations(interface) if interface is not None else ("", None)
             methods.append(
                 Method(
@@ -369,6 +371,25 @@ def _report_implicit(method: ET.Element, pou: str, reader: Reader) -> None:
             severity="warning",
             pou=pou,
         )
+
+
+def _report_call_after_init(method: ET.Element, interface: ET.Element | None, pou: str, reader: Reader) -> None:
+    """The error IR-UNSUPPORTED at a method CODESYS calls after an instance's initialisation (its attribute
+    'call_after_init' in CODESYS's attributes entry, or the pragma in its declaration text as TwinCAT writes it):
+    LadderLab would never call it (st/pragmas.py)."""
+    holders = [method, *([interface] if interface is not None else [])]
+    names = {
+        (attribute.get("Name") or "").lower()
+        for holder in holders
+        for data in data_entries(holder, reader, ATTRIBUTES_DATA)
+        for attributes in reader.children(data, "Attributes")
+        for attribute in reader.children(attributes, "Attribute")
+    }
+    texts = _entries(method, reader, PLAINTEXT_DATA, "InterfaceAsPlainText") + reader.children(
+        method, "InterfaceAsPlainText"
+    )
+    if "call_after_init" in names or any("'call_after_init'" in text_content(t) for t in texts):
+        reader.report("IR-UNSUPPORTED", CALL_AFTER_INIT_REFUSED, method, pou=pou)
 
 
 def read_extends(interface: ET.Element | None, reader: Reader) -> str | None:
