@@ -167,3 +167,41 @@ END_PROGRAM
         seen.append((sim.read("MAIN.I"), sim.read("MAIN.TOTAL")))
         sim.resume()
     assert seen == [(1, 0), (2, 1), (3, 3)] and sim.read("MAIN.TOTAL") == 6 and sim.read("MAIN.I") == 4
+
+
+GLOBAL_INSTANCE = """
+FUNCTION_BLOCK Doubler
+VAR_INPUT in1 : INT; END_VAR
+VAR_OUTPUT q : INT; END_VAR
+VAR n : INT := 1; END_VAR
+q := in1 * 2 + n;
+END_FUNCTION_BLOCK
+VAR_GLOBAL g : Doubler := (in1 := 11); END_VAR
+PROGRAM Main
+VAR_EXTERNAL g : Doubler; END_VAR
+VAR x : INT; END_VAR
+x := g.q;
+g(in1 := g.in1 + 1);
+END_PROGRAM
+"""
+
+
+def test_a_global_fb_instance_takes_its_declarations_initial_values():
+    """A global instance's structured initialiser names the FB's inputs (IEC 61131-3 ed.3 6.5.2.2, initial values of
+    FB instances; TYP-33): the globals were checked before the FB's variables were declared, so it was refused as
+    "Doubler has no field 'in1'"."""
+    sim = simulation(GLOBAL_INSTANCE)
+    seen = []
+    for _ in range(3):
+        sim.cycle(1)
+        seen.append((sim.read("MAIN.x"), sim.read("g.in1"), sim.read("g.q")))
+    # scan 1: x reads q before the first call (0), the call takes in1 12: q = 25; scan 2: x 25, in1 13, q 27 ...
+    assert seen == [(0, 12, 25), (25, 13, 27), (27, 14, 29)]
+
+
+def test_an_unknown_name_in_a_global_instances_initialiser_is_located():
+    project, _ = source_to_project(GLOBAL_INSTANCE.replace("(in1 := 11)", "(inl := 11)"), "test")
+    build = build_project(project, "fast")
+    assert [(d.code, d.message, d.file, d.line) for d in build.diagnostics if d.severity == "error"] == [
+        ("ST-UNKNOWN-MEMBER", "Doubler has no field 'inl'", "globals", 1)
+    ]

@@ -96,6 +96,8 @@ class ProjectChecker:
         #: declared instances with FB_init arguments, checked once every method is declared (st/fb_init.py)
         self._written_args: list[tuple[Symbol, list | None, Any, BodyChecker, PouInfo | None]] = []
         self._args_checked = False
+        #: globals with an initial value, checked once every POU's variables are declared
+        self._global_inits: list[tuple[Symbol, BodyChecker]] = []
 
     # ------------------------------------------------------------ driver
     def run(self) -> CheckResult:
@@ -146,6 +148,8 @@ class ProjectChecker:
         check_implementations(self, blocks)
         check_fb_init_methods(self, blocks)
         check_struct_members(self)
+        for symbol, checker in self._global_inits:
+            check_init(checker, symbol.type, symbol.init)
         for pou in self.project.pous:
             self._check_initial_values(pou)
         for entry in self._written_args:  # once the FB_init methods are declared
@@ -411,8 +415,8 @@ class ProjectChecker:
                 "and a program instance cannot share a name",
                 symbol,
             )
-        if symbol.init is not None:
-            check_init(checker, symbol.type, symbol.init)
+        if symbol.init is not None:  # once the POUs are declared: an FB instance's initialiser names its variables
+            self._global_inits.append((symbol, checker))
 
     def _declare_pou(self, pou, blocks: list[ast.VarBlock]) -> None:
         info = self.result.pous.get(pou.name.upper())
