@@ -60,11 +60,38 @@ class StructField:
     initial: object | None = None
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False, repr=False)
 class Struct:
+    """A STRUCT. One that points to itself (a linked list's ``next : POINTER TO Node``) holds itself among its
+    fields' Reference targets, so equality, hashing and repr stop at the cycle (``_comparing``)."""
+
     name: str
     fields: tuple[StructField, ...]
     pack_mode: int | None = None  # CODESYS's {attribute 'pack_mode'}: 1, 2, 4 or 8; None: the target's default
+
+    def __eq__(self, other: object) -> bool:
+        if self is other:
+            return True
+        if not isinstance(other, Struct) or (self.name, self.pack_mode) != (other.name, other.pack_mode):
+            return False
+        pair = (id(self), id(other))
+        if pair in _comparing:  # met again inside its own fields: equal unless another field differs
+            return True
+        _comparing.add(pair)
+        try:
+            return self.fields == other.fields
+        finally:
+            _comparing.discard(pair)
+
+    def __hash__(self) -> int:
+        return hash((self.name, self.pack_mode))  # not the fields: a self-pointing one gets them after it exists
+
+    def __repr__(self) -> str:
+        return f"Struct({self.name!r}, {[f.name for f in self.fields]})"
+
+
+#: pairs of Structs being compared (ids), so a STRUCT that points to itself compares without looping
+_comparing: set[tuple[int, int]] = set()
 
 
 @dataclass(frozen=True)
