@@ -11,6 +11,8 @@ from __future__ import annotations
 
 import pytest
 
+from ladderlab.ir.types import Elementary, Reference, Struct, StructField
+
 from .ed3_support import build, errors, program, scans
 
 NODE = "TYPE Node : STRUCT v : INT; next : POINTER TO Node; END_STRUCT; END_TYPE"
@@ -96,3 +98,18 @@ IF n = 3 THEN p := p^.next; p := p^.next; sum := p^.v; END_IF;"""
 )
 def test_containing_itself_by_value_stays_refused_once_where_it_is_named(types, message):
     assert errors(program("x : INT;", "x := 1;", types)) == [message]
+
+
+def _node(value_type: str) -> Struct:
+    node = Struct("NODE", ())
+    fields = (StructField("V", Elementary(value_type)), StructField("NEXT", Reference(node)))
+    object.__setattr__(node, "fields", fields)
+    return node
+
+
+def test_self_pointing_ir_structs_compare_hash_and_print_without_looping():
+    """Each POU's lowering builds its own Struct for Node: two of them are one type (the engine's caches key on it)."""
+    first, second, other = _node("INT"), _node("INT"), _node("DINT")
+    assert first == second and hash(first) == hash(second)
+    assert first != other
+    assert repr(first) == "Struct('NODE', ['V', 'NEXT'])"

@@ -7,6 +7,7 @@ syntax, so LD and FBD lowering produce the same types.
 from __future__ import annotations
 
 import functools
+import threading
 from dataclasses import dataclass
 
 from ..iec.elementary import DEFAULT_STRING_LENGTH, ELEMENTARY, ElementaryType
@@ -74,14 +75,14 @@ class Struct:
             return True
         if not isinstance(other, Struct) or (self.name, self.pack_mode) != (other.name, other.pack_mode):
             return False
-        pair = (id(self), id(other))
-        if pair in _comparing:  # met again inside its own fields: equal unless another field differs
+        pair, comparing = (id(self), id(other)), _comparing()
+        if pair in comparing:  # met again inside its own fields: equal unless another field differs
             return True
-        _comparing.add(pair)
+        comparing.add(pair)
         try:
             return self.fields == other.fields
         finally:
-            _comparing.discard(pair)
+            comparing.discard(pair)
 
     def __hash__(self) -> int:
         return hash((self.name, self.pack_mode))  # not the fields: a self-pointing one gets them after it exists
@@ -90,8 +91,16 @@ class Struct:
         return f"Struct({self.name!r}, {[f.name for f in self.fields]})"
 
 
-#: pairs of Structs being compared (ids), so a STRUCT that points to itself compares without looping
-_comparing: set[tuple[int, int]] = set()
+_COMPARISONS = threading.local()
+
+
+def _comparing() -> set[tuple[int, int]]:
+    """The pairs of Structs (ids) this thread is comparing, so a STRUCT that points to itself compares without
+    looping (the server builds projects in several threads)."""
+    pairs: set[tuple[int, int]] | None = getattr(_COMPARISONS, "pairs", None)
+    if pairs is None:
+        pairs = _COMPARISONS.pairs = set()
+    return pairs
 
 
 @dataclass(frozen=True)
