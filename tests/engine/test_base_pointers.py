@@ -45,6 +45,8 @@ def test_an_array_of_base_pointers_dispatches_to_each_instances_own_method(varia
         cube_area = 1 * 1 * scan * 6
         assert [sim.read("Main.d[1]"), sim.read("Main.d[2]")] == [4 * 10 + scan, cube_area * 10 + scan]
         assert (sim.read("Main.scales"), sim.read("Main.cu.scale")) == (1 * 10 + scan + 1, scan + 1)
+        # online, the path through the pointer reaches the cube's own variables (ON-11) as the base declares them
+        assert (sim.read("Main.shapes[2]^.scale"), sim.read("Main.shapes[2]")) == (scan + 1, "ADR(cu)")
 
 
 @pytest.mark.parametrize(
