@@ -1,5 +1,5 @@
 """IEC 61131-3 ed. 3 Table 22 conversions beyond <SRC>_TO_<DST> (issue 25, item 3): BCD in both directions with a
-located fault on an invalid BCD, the typed TRUNC forms, the overloaded TO_<type>, and WSTRING in conversions and
+located fault on an invalid BCD, the typed and overloaded TRUNC forms, the overloaded TO_<type>, and WSTRING in conversions and
 string functions. BCD reference values are written here from the decimal digits (``int(str(n), 16)``)."""
 
 from __future__ import annotations
@@ -9,6 +9,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from ladderlab.engine.stdlib import make_function
+from ladderlab.iec.elementary import ELEMENTARY
 
 from .ed3_support import build, errors, program, scans
 
@@ -74,6 +75,41 @@ def test_typed_trunc_and_overloaded_to_type():
     )
     # toward zero (TRUNC), nearest for <SRC>_TO_<DST> (FUN-11: -2.7 -> -3); TIME from ms
     assert scans(text, 1, "s", "l", "d", "lr", "t", "ws") == [[-2, 10**10, -3, -2.0, -3, "-3"]]
+
+
+@pytest.mark.parametrize("integer", ["SINT", "INT", "DINT", "LINT", "USINT", "UINT", "UDINT", "ULINT"])
+@given(data=st.data())
+def test_overloaded_trunc_int_truncates_toward_zero(integer, data):
+    """TRUNC_<int> (ed. 3 Table 22, the overloaded truncation): either real in, the named integer out; the
+    fraction dropped toward zero (CODESYS "TRUNC_INT": 1.9 -> 1, -1.4 -> -1). Values inside the result's range."""
+    low, high = ELEMENTARY[integer].min or 0, ELEMENTARY[integer].max or 0
+    value = data.draw(st.floats(min_value=max(low, -(2**52)), max_value=min(high, 2**52)))
+    real = data.draw(st.sampled_from(["REAL", "LREAL"])) if abs(value) < 2**24 else "LREAL"
+    assert call(f"TRUNC_{integer}", [real], value) == int(value)
+
+
+def test_overloaded_trunc_scan_by_scan():
+    text = program(
+        "r : REAL := -2.7; x : LREAL := 1.0E10; s : SINT; l : LINT; i : INT; j : INT; u : UDINT;",
+        "i := TRUNC_INT(1.9); j := TRUNC_INT(-1.4); s := TRUNC_SINT(r); l := TRUNC_LINT(x); u := TRUNC_UDINT(x / 4.0);"
+        "r := r - 1.0;",
+    )
+    # CODESYS "Operator: TRUNC_INT": TRUNC_INT(1.9) = 1, TRUNC_INT(-1.4) = -1; r is -2.7, -3.7, -4.7 (binary32
+    # -3.7 and -4.7 stay strictly between -4 and -3, -5 and -4)
+    assert scans(text, 3, "i", "j", "s", "l", "u") == [[1, -1, -2 - n, 10**10, 2_500_000_000] for n in range(3)]
+
+
+@pytest.mark.parametrize(
+    "body, message",
+    [
+        ("u := TRUNC_USINT(i);", "input IN of TRUNC_USINT must be ANY_REAL, not INT"),
+        ("u := TRUNC_UNIT(2.5);", "unknown function 'TRUNC_UNIT' - did you mean 'TRUNC_UINT'?"),
+        ("u := TRUNC_INT(2.5);", "cannot assign INT to USINT without a conversion such as INT_TO_USINT"),
+    ],
+)
+def test_overloaded_trunc_diagnostics(body, message):
+    found = errors(program("i : INT; u : USINT;", body))
+    assert len(found) == 1 and message in found[0] and "Main/body:6:" in found[0], found
 
 
 def test_wstring_in_conversions_and_string_functions():

@@ -135,6 +135,7 @@ def _ed3_table() -> dict[str, tuple[str, str | None, str]]:
     for integer in _INTEGERS:
         table[f"BCD_TO_{integer}"] = ("bcd_to", None, integer)
         table[f"{integer}_TO_BCD"] = ("to_bcd", integer, BCD_WIDTH[integer])
+        table[f"TRUNC_{integer}"] = ("trunc", None, integer)
         for real in ("REAL", "LREAL"):
             table[f"{real}_TRUNC_{integer}"] = ("trunc", real, integer)
     for name in CONVERSION_SPELLINGS:
@@ -144,7 +145,8 @@ def _ed3_table() -> dict[str, tuple[str, str | None, str]]:
 
 #: IEC 61131-3 ed. 3 Table 22 conversions besides <SRC>_TO_<DST> (FUN-10): name -> (kind, source or None, target).
 #: kind: "bcd_to" (BCD bit string -> integer), "to_bcd" (integer -> BCD bit string), "trunc" (real -> integer,
-#: toward zero), "to" (the overloaded TO_<type>: any elementary source). A None source is generic.
+#: toward zero; the overloaded TRUNC_<int> takes either real), "to" (the overloaded TO_<type>: any elementary
+#: source). A None source is generic.
 ED3_CONVERSIONS = _ed3_table()
 
 _CONVERSION_TEXT = {

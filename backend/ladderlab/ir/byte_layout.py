@@ -24,10 +24,15 @@ from .types import Array, Elementary, Enum, IrType, Reference, Struct, Subrange,
 
 Spec = tuple
 
+#: SIZEOF of a pointer (POINTER TO, REF_TO): an address of a 32-bit target; a 64-bit CODESYS target has 8.
+POINTER_BYTES = 4
 
-def byte_layout(ty: IrType) -> Spec | str:
-    """The spec of ``ty``, or why LadderLab cannot lay it out exactly as CODESYS does."""
-    narrow, wide = _layout(ty, 4), _layout(ty, 8)
+
+def byte_layout(ty: IrType, addresses: bool = False) -> Spec | str:
+    """The spec of ``ty``, or why LadderLab cannot lay it out exactly as CODESYS does. With ``addresses`` (for
+    SIZEOF only: nothing reads these bytes) a pointer member is ``("address", POINTER_BYTES)``: a linked list's
+    ``next`` counts as the 32-bit target's address, as SIZEOF of a pointer does."""
+    narrow, wide = _layout(ty, 4, addresses), _layout(ty, 8, addresses)
     if narrow == wide or isinstance(narrow, str) or isinstance(wide, str):
         return narrow
     name, what = _moved(narrow, wide)
@@ -38,7 +43,7 @@ def byte_layout(ty: IrType) -> Spec | str:
     )
 
 
-def _layout(ty: IrType, default: int) -> Spec | str:
+def _layout(ty: IrType, default: int, addresses: bool = False) -> Spec | str:
     """The spec of ``ty`` on a target whose STRUCTs without a pack_mode have the pack mode ``default``."""
     if isinstance(ty, Subrange):
         base = _layout(ty.base, default)
@@ -55,18 +60,20 @@ def _layout(ty: IrType, default: int) -> Spec | str:
             return ("string", ty.max_length)
         return f"{article(describe(ty))} (its bytes in CODESYS are not the value LadderLab keeps)"
     if isinstance(ty, Array):
-        spec = _layout(ty.element, default)
+        spec = _layout(ty.element, default, addresses)
         if isinstance(spec, str):
             return spec
         for lo, hi in reversed(ty.dims):
             spec = ("array", hi - lo + 1, spec)
         return spec
     if isinstance(ty, Struct):
-        return _struct_layout(ty, default)
+        return _struct_layout(ty, default, addresses)
     if isinstance(ty, Enum):
         values = tuple(sorted({value for _, value in ty.values}))
         return ("enum", ty.name, values, _layout(Elementary(ty.base), default))
     if isinstance(ty, Reference):
+        if addresses:
+            return ("address", POINTER_BYTES)
         return f"{article(describe(ty))} (an address: 4 or 8 bytes depending on the target)"
     return f"{article(describe(ty))} (it has no byte layout)"
 
@@ -127,13 +134,13 @@ def _base(ty: Elementary | Subrange) -> Elementary:
     return ty.base if isinstance(ty, Subrange) else ty
 
 
-def _struct_layout(ty: Struct, default: int) -> Spec | str:
+def _struct_layout(ty: Struct, default: int, addresses: bool) -> Spec | str:
     """Each member at the next multiple of its alignment (capped by the pack mode), the size a multiple of the
     largest one: CODESYS's layout, and C's."""
     members, end, largest = [], 0, 1
     pack = ty.pack_mode or default
     for field in ty.fields:
-        spec = _layout(field.type, default)
+        spec = _layout(field.type, default, addresses)
         if isinstance(spec, str):
             return f"the STRUCT {ty.name}, whose member {field.name} is {spec}"
         align = min(_alignment(spec, default), pack)
@@ -148,7 +155,7 @@ def _alignment(spec: Spec, default: int) -> int:
     """The alignment of a member (a STRUCT member lies at a multiple of it): a number's size, 1 for BOOL and
     STRING, an array's element's, a STRUCT's largest member's capped by its pack mode."""
     kind = spec[0]
-    if kind in ("int", "real"):
+    if kind in ("int", "real", "address"):
         return spec[1]
     if kind in ("range", "enum"):
         return _alignment(spec[3], default)
@@ -180,7 +187,7 @@ def _moved(narrow: Spec, wide: Spec) -> tuple[str, str]:
 def _spec_size(spec: Spec) -> int:
     """How many bytes a variable laid out as ``spec`` takes."""
     kind = spec[0]
-    if kind in ("int", "real"):
+    if kind in ("int", "real", "address"):
         return spec[1]
     if kind == "string":
         return spec[1] + 1

@@ -158,8 +158,9 @@ def _reference_to(expr: Expr, target: Reference, node: ast.Expr | None) -> Expr:
         return Const(None, target)
     if not isinstance(expr.type, Reference):
         raise LoweringError(f"a {_reference_text(target)} cannot refer to {_referred_text(expr.type)}", node)
-    if same_target(expr.type.target, target.target):
-        return expr
+    instances = isinstance(expr.type.target, FbInstance) and isinstance(target.target, FbInstance)
+    if instances or same_target(expr.type.target, target.target):
+        return expr  # (FBs: a derived FB's instance the checker accepted, whose methods are dispatched by its class)
     specs = view_specs(expr.type.target, target.target)
     if isinstance(specs, str):
         raise LoweringError(specs, node)

@@ -14,6 +14,7 @@ from ..iec import stdlib
 from ..model.project import Pou as ModelPou
 from ..st import ast
 from ..st import types as t
+from ..st.interfaces import attempted_fb
 from ..st.methods import SUPER, is_self
 from ..st.printer import print_expression
 from ..st.symbols import PouInfo, PropertyRef, Symbol
@@ -119,12 +120,11 @@ def _assign(statement: ast.Assign, ctx: PouContext) -> list[Stmt]:
         en, eno, copies = gated(en, eno, copies, origin, ctx)
         return [FnCall(call, lower_access(target, ctx), origin, en, eno), *copies, *after]
     lowered = lower_to(value, ctx, ctx.ir_type(target.ty))  # the value is computed before the target is stored
-    if statement.attempt:  # ?=: NULL unless the instance's FB implements the target's interface
-        blocks = ctx.checked.pous.values()
-        implementing = tuple(
-            fb.name.upper() for fb in blocks if fb.kind == "FUNCTION_BLOCK" and fb.implements(target.ty.info)
-        )
-        lowered = Attempt(lowered, implementing, lowered.type)
+    if statement.attempt:  # ?=: NULL unless the instance's FB implements the interface (extends the target's FB)
+        blocks = [fb for fb in ctx.checked.pous.values() if fb.kind == "FUNCTION_BLOCK"]
+        base = attempted_fb(target.ty)
+        fits = [fb for fb in blocks if (fb.derives_from(base) if base is not None else fb.implements(target.ty.info))]
+        lowered = Attempt(lowered, tuple(fb.name.upper() for fb in fits), lowered.type)
     place = lower_access(target, ctx)
     if isinstance(place.type, Reference) and has_checked_values(place.type.target):  # the checker's may lack the range
         lowered = retarget(lowered, place.type, value)

@@ -32,7 +32,7 @@ from ..st.body import BodyChecker
 from ..st.printer import print_expression
 from ..st.rules import EnumValue, constant_value
 from ..st.symbols import CheckResult, PouInfo, Symbol, TypeDef
-from .byte_layout import byte_layout, same_target, view_specs
+from .byte_layout import POINTER_BYTES, byte_layout, same_target, view_specs
 from .nodes import Const, ReferenceInit, Slot, upper_name
 from .types import (
     Array,
@@ -47,8 +47,6 @@ from .types import (
     fb_instance,
 )
 
-#: SIZEOF of a pointer (POINTER TO, REF_TO): an address of a 32-bit target; a 64-bit CODESYS target has 8.
-POINTER_BYTES = 4
 _ALIAS_DEPTH = 64  # longer TYPE alias chains than this are cycles the checker already reported
 
 
@@ -156,15 +154,21 @@ class TypeLowering:
     def _struct(self, ty: t.StructType, spec: ast.TypeSpec | None) -> Struct:
         if id(ty) in self._structs:
             return self._structs[id(ty)]
+        # registered before its fields are lowered: a field pointing to this STRUCT (a linked list's ``next``)
+        # lowers to a Reference to this very object, whose fields are set once all are lowered
+        lowered = self._structs[id(ty)] = Struct(ty.name.upper(), (), ty.pack_mode)
         fields = []
-        for upper, (field_type, field_spec, init) in self._fields(ty, spec).items():
-            try:
-                initial = self.initial(field_type, field_spec, init)
-            except LoweringError as error:
-                raise _in_types_text(error) from None
-            fields.append(StructField(upper, self.type_of(field_type, field_spec), initial))
-        lowered = Struct(ty.name.upper(), tuple(fields), ty.pack_mode)
-        self._structs[id(ty)] = lowered
+        try:
+            for upper, (field_type, field_spec, init) in self._fields(ty, spec).items():
+                try:
+                    initial = self.initial(field_type, field_spec, init)
+                except LoweringError as error:
+                    raise _in_types_text(error) from None
+                fields.append(StructField(upper, self.type_of(field_type, field_spec), initial))
+        except LoweringError:
+            del self._structs[id(ty)]
+            raise
+        object.__setattr__(lowered, "fields", tuple(fields))  # frozen: completed once, before anyone reads it
         return lowered
 
     def _fields(self, ty: t.StructType, spec: ast.TypeSpec | None) -> dict[str, tuple[t.Type, Any, Any]]:
@@ -451,7 +455,7 @@ def byte_size(type: IrType) -> int:
     if isinstance(type, Array):
         return _size(type) * byte_size(type.element)
     if isinstance(type, Struct):
-        spec = byte_layout(type)
+        spec = byte_layout(type, addresses=True)
         if isinstance(spec, str):
             raise LoweringError(f"SIZEOF is refused for {spec}")
         return spec[2]

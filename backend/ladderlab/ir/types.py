@@ -7,6 +7,7 @@ syntax, so LD and FBD lowering produce the same types.
 from __future__ import annotations
 
 import functools
+import threading
 from dataclasses import dataclass
 
 from ..iec.elementary import DEFAULT_STRING_LENGTH, ELEMENTARY, ElementaryType
@@ -60,11 +61,46 @@ class StructField:
     initial: object | None = None
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False, repr=False)
 class Struct:
+    """A STRUCT. One that points to itself (a linked list's ``next : POINTER TO Node``) holds itself among its
+    fields' Reference targets, so equality, hashing and repr stop at the cycle (``_comparing``)."""
+
     name: str
     fields: tuple[StructField, ...]
     pack_mode: int | None = None  # CODESYS's {attribute 'pack_mode'}: 1, 2, 4 or 8; None: the target's default
+
+    def __eq__(self, other: object) -> bool:
+        if self is other:
+            return True
+        if not isinstance(other, Struct) or (self.name, self.pack_mode) != (other.name, other.pack_mode):
+            return False
+        pair, comparing = (id(self), id(other)), _comparing()
+        if pair in comparing:  # met again inside its own fields: equal unless another field differs
+            return True
+        comparing.add(pair)
+        try:
+            return self.fields == other.fields
+        finally:
+            comparing.discard(pair)
+
+    def __hash__(self) -> int:
+        return hash((self.name, self.pack_mode))  # not the fields: a self-pointing one gets them after it exists
+
+    def __repr__(self) -> str:
+        return f"Struct({self.name!r}, {[f.name for f in self.fields]})"
+
+
+_COMPARISONS = threading.local()
+
+
+def _comparing() -> set[tuple[int, int]]:
+    """The pairs of Structs (ids) this thread is comparing, so a STRUCT that points to itself compares without
+    looping (the server builds projects in several threads)."""
+    pairs: set[tuple[int, int]] | None = getattr(_COMPARISONS, "pairs", None)
+    if pairs is None:
+        pairs = _COMPARISONS.pairs = set()
+    return pairs
 
 
 @dataclass(frozen=True)

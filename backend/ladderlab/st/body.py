@@ -589,7 +589,7 @@ class BodyChecker:
             self.report(
                 "ST-NOT-LVALUE", "REF= needs a variable on its right: the one the reference will refer to", stmt.value
             )
-        elif not t.same(target.target, value):
+        elif not t.same(target.target, value) and not t.derived(target.target, value):
             self.report("ST-TYPE-MISMATCH", f"a {target} cannot refer to a {value}", stmt.value)
         else:
             problem = unreferable(self, stmt.value)

@@ -285,7 +285,7 @@ def _bind(checker: Any, arg: ast.Arg, param: Param, callee: str) -> None:
         return
     if not isinstance(arg.value, _WRITABLE):
         checker.report("ST-NOT-LVALUE", f"{reference} input {param.name} of {callee} needs a variable", arg.value)
-    elif not t.same(reference.target, value):
+    elif not t.same(reference.target, value) and not t.derived(reference.target, value):
         checker.report(
             "ST-TYPE-MISMATCH", f"input {param.name} of {callee}: a {reference} cannot refer to a {value}", arg.value
         )
@@ -310,23 +310,12 @@ def _in_out(checker: Any, arg: ast.Arg, param: Param, callee: str) -> None:
             f"the CONSTANT '{root.ref.name}' cannot be passed as in-out parameter {param.name}",
             arg.value,
         )
-    elif not t.same(param.type, value) and not _open_array(param.type, value) and not _derived(param.type, value):
+    elif not t.same(param.type, value) and not _open_array(param.type, value) and not t.derived(param.type, value):
         checker.report(
             "ST-TYPE-MISMATCH",
             f"in-out parameter {param.name} of {callee} needs {article(str(param.type))}, got {value}",
             arg.value,
         )
-
-
-def _derived(param: Type, value: Type) -> bool:
-    """An instance of a function block that EXTENDS the in-out's FB (st/inheritance.py) stands for one of it."""
-    return (
-        isinstance(param, t.FbType)
-        and isinstance(value, t.FbType)
-        and param.pou is not None
-        and value.pou is not None
-        and value.pou.derives_from(param.pou)
-    )
 
 
 def _open_array(param: Type, value: Type) -> bool:

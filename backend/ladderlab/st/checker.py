@@ -92,7 +92,11 @@ class ProjectChecker:
         self.project = project
         self.result = CheckResult()
         self.type_decls: dict[str, ast.TypeDecl] = {}
-        self._resolving: set[str] = set()
+        #: the TYPEs being resolved, outermost first; a STRUCT among them is in ``_pending`` (filled in as its members
+        #: resolve) and ``_pointers`` holds the depth of ``_resolving`` at each POINTER TO / REF_TO entered
+        self._resolving: list[str] = []
+        self._pending: dict[str, t.StructType] = {}
+        self._pointers: list[int] = []
         #: declared instances with FB_init arguments, checked once every method is declared (st/fb_init.py)
         self._written_args: list[tuple[Symbol, list | None, Any, BodyChecker, PouInfo | None]] = []
         self._args_checked = False
@@ -252,13 +256,13 @@ class ProjectChecker:
         decl = self.type_decls.get(upper)
         if decl is None:
             return None
-        report = self._reporter("types", None)
-        if upper in self._resolving:
-            report("ST-RECURSION", f"the type '{decl.name}' is defined in terms of itself", decl)
+        if upper in self._resolving:  # an alias cycle's initial value: the cycle is reported where it is named
             return None
-        self._resolving.add(upper)
+        report = self._reporter("types", None)
+        self._resolving.append(upper)
         resolved = self.resolve(decl.type, BodyChecker(self.result, None, report), decl.name)
-        self._resolving.discard(upper)
+        self._resolving.pop()
+        self._pending.pop(upper, None)
         if decl.pack_mode is not None:
             _pack(decl, resolved, report)
         init = decl.init
@@ -298,10 +302,15 @@ class ProjectChecker:
         if isinstance(spec, ast.ArrayType):
             return self._array(spec, checker)
         if isinstance(spec, ast.PointerType):
-            return t.PointerType(self.resolve(spec.target, checker), spec.kind == "REFERENCE TO")
+            self._pointers.append(len(self._resolving))
+            target = self.resolve(spec.target, checker)
+            self._pointers.pop()
+            return t.PointerType(target, spec.kind == "REFERENCE TO")
         if isinstance(spec, ast.EnumType):
             return self._enum(spec, checker, name or "enumeration")
         struct = t.StructType(name or "STRUCT")
+        if name and self._resolving and self._resolving[-1] == name.upper():
+            self._pending[name.upper()] = struct
         for member in spec.members:
             member_type = self.resolve(member.type, checker)
             for decl_name in member.names:
@@ -317,6 +326,8 @@ class ProjectChecker:
         builtin = t.elementary(upper)
         if builtin is not None:
             return builtin
+        if upper in self._resolving:
+            return self._being_resolved(upper, spec, report)
         typedef = self._typedef(upper)
         if typedef is not None:
             return typedef.type
@@ -340,6 +351,17 @@ class ProjectChecker:
             *(p.name for p in self.result.pous.values() if p.kind != "FUNCTION"),
         ]
         report("ST-UNKNOWN-TYPE", f"unknown type '{spec.name}'" + did_you_mean(spec.name, known), spec)
+        return ERROR
+
+    def _being_resolved(self, upper: str, spec: ast.NamedType, report) -> Type:
+        """A TYPE named inside its own definition: a STRUCT reached through a POINTER TO / REF_TO / REFERENCE TO
+        since it began (a linked list's ``next : POINTER TO Node``, or two STRUCTs pointing at each other) is
+        that STRUCT; anything else would contain itself (ST-RECURSION)."""
+        depth = self._resolving.index(upper)
+        if upper in self._pending and any(mark > depth for mark in self._pointers):
+            return self._pending[upper]
+        name = self.type_decls[upper].name
+        report("ST-RECURSION", f"the type '{name}' is defined in terms of itself", spec)
         return ERROR
 
     def _array(self, spec: ast.ArrayType, checker: BodyChecker) -> Type:

@@ -184,10 +184,20 @@ def _check_property(fb: PouInfo, interface: PouInfo, name: str, report) -> None:
 
 
 def check_attempt(checker: Any, stmt: ast.Assign) -> None:
-    """``target ?= value``: the target an interface variable, the value an instance or an interface variable."""
+    """``target ?= value``: the target an interface variable, the value an instance or an interface variable; or
+    (IEC ed. 3 6.6.6.7) the target a REF_TO / POINTER TO a function block, the value a reference or pointer to
+    another of the tree or an interface variable: the reference when its instance is of the target's FB or one
+    extending it, else NULL."""
     target = checker.target(stmt.target)
     value = checker.expr(stmt.value)
     if target is t.ERROR or value is t.ERROR:
+        return
+    if attempted_fb(target) is not None:
+        if not (attempted_fb(value) is not None or isinstance(value, t.InterfaceType)):
+            message = (
+                f"?= into a {target} tries a reference to a function block or an interface variable, not a {value}"
+            )
+            checker.report("ST-TYPE-MISMATCH", message, stmt.value)
         return
     if not isinstance(target, t.InterfaceType):
         checker.report("ST-TYPE-MISMATCH", f"?= assigns to a variable of an interface's type, not to a {target}", stmt)
@@ -195,6 +205,13 @@ def check_attempt(checker: Any, stmt: ast.Assign) -> None:
         checker.report(
             "ST-TYPE-MISMATCH", f"?= tries an FB instance or an interface variable, not a {value}", stmt.value
         )
+
+
+def attempted_fb(ty: t.Type) -> Any:
+    """The user FB (PouInfo) a REF_TO / POINTER TO ``ty`` refers to, which ``?=`` may try; else None."""
+    if isinstance(ty, t.PointerType) and not ty.implicit and isinstance(ty.target, t.FbType):
+        return ty.target.pou
+    return None
 
 
 def reference_comparison(left: t.Type, right: t.Type) -> bool:

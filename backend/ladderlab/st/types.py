@@ -367,6 +367,8 @@ def assignable(target: Type, source: Type) -> str | None:
     if isinstance(target, Elementary) and isinstance(source, Elementary) and _widens(source, target):
         return "widen"
     if isinstance(target, PointerType) and isinstance(source, PointerType):
+        if isinstance(target.target, FbType) and isinstance(source.target, FbType):  # no bytes to see: up the tree
+            return None if derived(target.target, source.target) else "error"
         return "widen"
     return "narrow" if narrows(target, source) else "error"
 
@@ -419,6 +421,19 @@ def conversion_hint(target: Type, source: Type) -> str:
     if isinstance(target, (Elementary, StringType)) and isinstance(source, (Elementary, StringType)):
         return f" without a conversion such as {source.name}_TO_{target.name}"
     return ""
+
+
+def derived(base: Type, value: Type) -> bool:
+    """An instance of ``value`` stands for one of ``base``: a user function block that EXTENDS ``base``'s
+    (st/inheritance.py), reached through a base-typed in-out, pointer or reference, which dispatches its methods
+    and properties to the instance's own FB."""
+    return (
+        isinstance(base, FbType)
+        and isinstance(value, FbType)
+        and base.pou is not None
+        and value.pou is not None
+        and value.pou.derives_from(base.pou)
+    )
 
 
 def implements(source: Type, interface: InterfaceType) -> bool:
