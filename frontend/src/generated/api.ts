@@ -1577,6 +1577,30 @@ export interface components {
        */
       type: "return";
     };
+    /**
+     * GlobalVariableList
+     * @description A named global variable list (GVL) as CODESYS and TwinCAT keep globals: ``gvls/<name>.st`` in the project
+     *     folder. Code reads its variables as ``Name.x`` or, unless ``qualified_only``, as ``x`` (docs/st.md).
+     */
+    GlobalVariableList: {
+      /**
+       * Name
+       * @description The list's name (an IEC identifier): the qualifier of ``Name.x``.
+       */
+      name: string;
+      /**
+       * Qualified Only
+       * @description {attribute 'qualified_only'}: its variables are used only as ``Name.x``.
+       * @default false
+       */
+      qualified_only?: boolean;
+      /**
+       * Text
+       * @description ST text of its VAR_GLOBAL ... END_VAR blocks, as typed.
+       * @default
+       */
+      text?: string;
+    };
     /** HTTPValidationError */
     HTTPValidationError: {
       /** Detail */
@@ -2633,6 +2657,11 @@ export interface components {
        * @default
        */
       globals?: string;
+      /**
+       * Gvls
+       * @description Named global variable lists (gvls/<name>.st), in order.
+       */
+      gvls?: components["schemas"]["GlobalVariableList"][];
       /**
        * Libraries
        * @description Vendor compatibility libraries the project uses; a POU of the project shadows a library function of the same name.
@@ -4051,6 +4080,7 @@ export type FbdLabel = components["schemas"]["FbdLabel"];
 export type FbdNetwork = components["schemas"]["FbdNetwork"];
 export type FbdOrder = components["schemas"]["FbdOrder"];
 export type FbdReturn = components["schemas"]["FbdReturn"];
+export type GlobalVariableList = components["schemas"]["GlobalVariableList"];
 export type HttpValidationError = components["schemas"]["HTTPValidationError"];
 export type Health = components["schemas"]["Health"];
 export type HistoryDiff = components["schemas"]["HistoryDiff"];
