@@ -127,7 +127,10 @@ def _walk(result: CheckResult, path: str) -> tuple[t.Type, tuple[int, ...]]:
     if program is not None:
         ty: t.Type = t.FbType(program.name, pou=program)
     else:
-        if head.upper() == GLOBALS_PREFIX and rest[:1] == [("punct", ".")] and rest[1:2] and rest[1][0] == "name":
+        qualified = rest[:1] == [("punct", ".")] and rest[1:2] and rest[1][0] == "name"
+        gvl = result.gvls.get(head.upper())
+        listed = qualified and gvl is not None and rest[1][1].upper() in gvl.members
+        if qualified and (listed or head.upper() == GLOBALS_PREFIX):  # GVL_IO.x: the list's variable, GVL.x: a global
             head, rest = rest[1][1], rest[2:]
         symbol = result.globals.get(head.upper())
         if symbol is None:
