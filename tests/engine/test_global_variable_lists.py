@@ -169,3 +169,13 @@ def test_an_online_path_into_a_list_without_the_variable_is_refused(path, messag
     with pytest.raises(UnknownPath) as refused:
         sim.read(path)
     assert message in str(refused.value)
+
+
+def test_the_lists_texts_count_in_the_source_size_limit(monkeypatch: pytest.MonkeyPatch):
+    monkeypatch.setenv("LADDERLAB_MAX_SOURCE_CHARACTERS", "100")
+    big = GlobalVariableList(name="GVL_Big", text="VAR_GLOBAL\n" + "    a0123456789 : INT;\n" * 5 + "END_VAR")
+    assert len(big.text) == 11 + 5 * 23 + 7  # 133 characters; the POU has none
+    assert errors(st(""), gvls=(big,)) == [
+        "POU Main: error LIMIT-SIZE: the project's ST text has 133 characters (the largest POU, Main, has 0), more than the limit of 100 characters for the "
+        "ST text of one project (the setting LADDERLAB_MAX_SOURCE_CHARACTERS raises it)"
+    ]

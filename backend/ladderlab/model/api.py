@@ -422,6 +422,7 @@ class Reference(Model):
         "step",
         "return type",
         "globals",
+        "gvl",
         "types",
         "task",
         "test",

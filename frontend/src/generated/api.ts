@@ -2852,6 +2852,7 @@ export interface components {
         | "step"
         | "return type"
         | "globals"
+        | "gvl"
         | "types"
         | "task"
         | "test"
