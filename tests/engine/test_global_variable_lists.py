@@ -13,6 +13,7 @@ import pytest
 from ladderlab.engine.paths import UnknownPath
 from ladderlab.model import GlobalVariableList, Pou, Project, Task
 from ladderlab.simulation.build import build_project
+from ladderlab.simulation.xref import cross_reference
 from tests.ir.diagram_support import coil, contact, fbd_pou, inp, ld_pou, net, out, rung
 from tests.sfc.support import jump, sfc_pou, step, tr
 
@@ -179,3 +180,13 @@ def test_the_lists_texts_count_in_the_source_size_limit(monkeypatch: pytest.Monk
         "POU Main: error LIMIT-SIZE: the project's ST text has 133 characters (the largest POU, Main, has 0), more than the limit of 100 characters for the "
         "ST text of one project (the setting LADDERLAB_MAX_SOURCE_CHARACTERS raises it)"
     ]
+
+
+def test_the_cross_reference_list_names_a_globals_list_and_its_qualified_uses():
+    listed = {
+        e.name: [(a.kind, a.gvl, a.pou, a.line) for a in e.accesses]
+        for e in cross_reference(project(st("GVL_IO.nCount := counter;\nGVL.counter := GVL_IO.nCount;"))).entries
+        if e.pou is None
+    }
+    assert listed["nCount"] == [("declared", "GVL_IO", None, 3), ("write", None, "Main", 1), ("read", None, "Main", 2)]
+    assert listed["counter"] == [("declared", "GVL", None, 2), ("read", None, "Main", 1), ("write", None, "Main", 2)]

@@ -3979,6 +3979,11 @@ export interface components {
        */
       element?: string | null;
       /**
+       * Gvl
+       * @description A global's declaration: its global variable list, if any.
+       */
+      gvl?: string | null;
+      /**
        * Kind
        * @enum {string}
        */
@@ -4010,7 +4015,7 @@ export interface components {
       path: string;
       /**
        * Pou
-       * @description The POU, None for the global declarations (globals.st).
+       * @description The POU, None for the global declarations (globals.st, gvls/).
        */
       pou: string | null;
     };
