@@ -1,7 +1,7 @@
 """Global variable lists in the project tree (issue 25): listed with their qualified_only option, opened in the
 global variables' editor, added, renamed everywhere (its qualifier in GVL_IO.bStart too) and deleted; the live
-check reports a bare use of a qualified_only list's variable in the list's words; online, GVL_IO.bStart is
-watched and the ST body shows its value. Screenshots go to tests/browser/artifacts/.
+check reports a bare use of a qualified_only list's variable at its place; online, GVL_IO.bStart is watched and
+written, and an LD contact on it shows its value. Screenshots go to tests/browser/artifacts/.
 """
 
 from __future__ import annotations
@@ -34,6 +34,23 @@ PROJECT = {
         }
     ],
     "tasks": [{"name": "Fast", "interval": "T#10ms", "priority": 0, "programs": ["Main"]}],
+}
+LAMP = {
+    "name": "Lamp",
+    "kind": "program",
+    "language": "ld",
+    "declarations": "VAR\n    q : BOOL;\nEND_VAR",
+    "body": {
+        "networks": [
+            {
+                "id": "n1",
+                "elements": [
+                    {"type": "contact", "id": "c1", "var": "GVL_IO.bStart"},
+                    {"type": "coil", "id": "q1", "var": "q"},
+                ],
+            }
+        ]
+    },
 }
 
 
@@ -106,7 +123,8 @@ def test_lists_are_edited_added_renamed_and_deleted_from_the_tree(page, server: 
 def test_a_bare_use_of_a_qualified_only_list_is_shown_at_its_line_and_a_list_variable_watched_online(
     page, server: str
 ) -> None:
-    store_project(server, PROJECT)
+    tasks = [{**PROJECT["tasks"][0], "programs": ["Main", "Lamp"]}]
+    store_project(server, {**PROJECT, "pous": [*PROJECT["pous"], LAMP], "tasks": tasks})
     page.goto(server)
     page.get_by_role("navigation", name="Projects").get_by_role("button", name=re.compile("^lists")).click()
     tree(page).get_by_role("button", name=re.compile("^Main")).click()
@@ -149,4 +167,10 @@ def test_a_bare_use_of_a_qualified_only_list_is_shown_at_its_line_and_a_list_var
     panels.locator('tr[data-path="BSTART"]').get_by_role("button", name="Write").click()
     expect(start).to_have_text("TRUE")
     expect(counter).to_have_text(re.compile(r"^[1-9][0-9]*$"))
+
+    # The LD contact on GVL_IO.bStart shows the list's variable online
+    tree(page).get_by_role("button", name=re.compile("^Lamp")).click()
+    contact = page.locator('g.ld-element[data-id="c1"] .ld-badge').first
+    expect(contact).to_have_attribute("data-value", "TRUE")
+    expect(page.locator('g.ld-element[data-id="q1"] .ld-badge').first).to_have_attribute("data-value", "TRUE")
     page.screenshot(path=str(ARTIFACTS / "gvl-online.png"))
