@@ -3551,6 +3551,11 @@ export interface components {
       /** Constant */
       constant: boolean;
       /**
+       * Gvl
+       * @description A global's global variable list (CODESYS's GVL), whose name qualifies it: GVL.x.
+       */
+      gvl?: string | null;
+      /**
        * Initial
        * @description Declared initial value (or the user type's), as ST text; null means the type's default.
        */
