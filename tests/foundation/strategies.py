@@ -12,6 +12,7 @@ from ladderlab.model import (
     Contact,
     FbdBody,
     FbdNetwork,
+    GlobalVariableList,
     InputNode,
     Jump,
     LdBody,
@@ -180,6 +181,22 @@ def projects(draw):
         name=draw(st.from_regex(r"[a-z][a-z0-9_-]{0,10}", fullmatch=True)),
         types=draw(st.sampled_from(["", "TYPE Color : (Red, Green); END_TYPE"])),
         globals=draw(st.sampled_from(["", "VAR_GLOBAL\n    g : INT;\nEND_VAR"])),
+        gvls=draw(
+            st.lists(
+                st.builds(
+                    GlobalVariableList,
+                    name=identifiers,
+                    qualified_only=st.booleans(),
+                    # any text, a pragma-like first line and trailing newlines included: the file keeps it exactly
+                    text=st.one_of(
+                        texts,
+                        st.sampled_from(["", "VAR_GLOBAL\n    bStart : BOOL;\nEND_VAR", "{attribute 'x'}\nVAR_GLOBAL"]),
+                    ),
+                ),
+                max_size=3,
+                unique_by=lambda g: g.name.upper(),
+            )
+        ),
         pous=pou_list,
         tasks=draw(
             st.lists(

@@ -44,8 +44,8 @@ def imported(text: str | None = None):
 
 def test_every_part_of_the_whole_project_export_is_read():
     """The application's program and data type (resource addData), the GVL's two blocks (mixedattrsvarlist, not the
-    merged list written CONSTANT), the task's program (typeName empty: the instance's name) and interval (PT0.01S is
-    10 ms), EXTENDS and IMPLEMENTS (<Inheritance>), PRIVATE and PROTECTED (AccessModifiers), the method's comment
+    merged list written CONSTANT) as the list GVL, the task's program (typeName empty: the instance's name) and
+    interval (PT0.01S is 10 ms), EXTENDS and IMPLEMENTS (<Inheritance>), PRIVATE and PROTECTED (AccessModifiers), the method's comment
     (<documentation>), the properties' accessors in either order; what LadderLab cannot carry is named in a
     warning. FB_init is an FB_init, which LadderLab runs by itself as CODESYS does (test_plcopen_fb_init.py)."""
     result = imported()
@@ -84,10 +84,15 @@ def test_every_part_of_the_whole_project_export_is_read():
     assert (room.name, room.access, room.get.body, room.set) == ("Room", "PROTECTED", "Room := CAPACITY - n;", None)
     assert project.types.startswith("TYPE\n    E_STATE : (Idle := 0, Filling := 1, Full := 2);\nEND_TYPE")
     [resource] = project.configuration.resources
-    assert resource.globals == (
-        "VAR_GLOBAL CONSTANT\n    CAPACITY : INT := 9;\nEND_VAR\n"
-        "VAR_GLOBAL\n    tankLevel : INT; (* written by PLC_PRG every scan *)\nEND_VAR"
-    )
+    assert resource.globals == ""  # the GVL is a named list (tests/interchange/test_plcopen_gvls.py)
+    assert [(g.name, g.qualified_only, g.text) for g in project.gvls] == [
+        (
+            "GVL",
+            False,
+            "VAR_GLOBAL CONSTANT\n    CAPACITY : INT := 9;\nEND_VAR\n"
+            "VAR_GLOBAL\n    tankLevel : INT; (* written by PLC_PRG every scan *)\nEND_VAR",
+        )
+    ]
     [task] = resource.tasks
     assert (task.name, task.interval, task.priority) == ("MainTask", "T#10ms", 1)
     assert [(p.name, p.type) for p in task.programs] == [("PLC_PRG", "PLC_PRG")]

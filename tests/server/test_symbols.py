@@ -30,6 +30,7 @@ def symbol(
         "comment": comment,
         "retain": retain,
         "constant": constant,
+        "gvl": None,
     }
 
 

@@ -222,6 +222,13 @@ class Resolver:
             if not rest:
                 raise ValueError(f"{text!r}: expected '.name' after {first}")
             return self._walk(text, first, ("attached", first), t.FbInstance(self.attached[first]), (), rest)
+        listed = self.context.program.gvls.get(first)
+        if listed is not None and rest[:1] == [("punct", ".")]:  # GVL_IO.x: a named list's variable
+            name, after = self._member_name(rest, text)
+            if name.upper() in listed:
+                return self._global(text, name, after)
+            if first != GLOBALS_PREFIX:  # a list called GVL: GVL.x is any global still
+                raise UnknownPath(f"the global variable list {toks[0][1]} has no variable {name!r}")
         if first == GLOBALS_PREFIX and rest[:1] == [("punct", ".")]:
             name, rest = self._member_name(rest, text)
             return self._global(text, name, rest)

@@ -16,10 +16,12 @@ from .types import Array, FbInstance, IrType, Struct
 
 
 def source_too_large(project: Project) -> Diagnostic | None:
-    """The refusal of a project whose ST text (types, globals, declarations, ST bodies) exceeds the limit."""
+    """The refusal of a project whose ST text (types, globals and global variable lists, declarations, ST bodies)
+    exceeds the limit."""
     # stripped: a POU read from a .st file keeps its lines by leading blank lines, which cost nothing to parse
     sizes = {pou.name: len(pou.declarations.strip()) + _body_text(pou) for pou in project.pous}
-    total = sum(sizes.values()) + len(project.types.strip()) + len(project.globals.strip())
+    texts = [project.types, project.globals, *(gvl.text for gvl in project.gvls)]
+    total = sum(sizes.values()) + sum(len(text.strip()) for text in texts)
     if total <= limits.SOURCE_BYTES.value:
         return None
     largest = max(sizes, key=sizes.__getitem__, default=None)

@@ -220,9 +220,14 @@ class Operands:
         return self._symbol(name) is not None
 
     def _symbol(self, name: str) -> Symbol | None:
-        """A POU variable or else a global by name, as the checker looks names up."""
+        """A POU variable or else a global by name, as the checker looks names up (not one of a qualified_only list:
+        its bare name is an error the checker reports)."""
         upper = name.upper()
-        return self.ctx.info.symbols.get(upper) or self.ctx.checked.globals.get(upper)
+        found = self.ctx.info.symbols.get(upper)
+        if found is not None:
+            return found
+        listed = self.ctx.checked.listed.get(upper)  # a qualified_only list's variable: the checker reports it
+        return None if listed is not None and listed.qualified_only else self.ctx.checked.globals.get(upper)
 
     def lower(self, node: ast.Expr, at: At, expected: IrType | None = None) -> Expr | None:
         """``lower_expr`` with its errors reported at ``at`` (None then)."""

@@ -32,6 +32,7 @@ from ..iec.values import article
 from ..st import ast
 from ..st import types as t
 from ..st.context_typing import FoldError, fold, literal_only
+from ..st.gvls import list_qualified
 from ..st.methods import is_self, is_super
 from ..st.printer import print_expression
 from ..st.rules import EnumValue
@@ -307,6 +308,8 @@ def _access(node: ast.Expr, ctx: PouContext) -> Var:
             "run then), it cannot be passed or written by reference here",
             node,
         )
+    if list_qualified(node):  # GVL.x: the global x (st/gvls.py)
+        return _access(node.base, ctx)
     if isinstance(node, ast.Member) and not is_part(node):
         base = lower_access(node.base, ctx)
         return Var(base.scope, base.name, _member_type(node, base.type, ctx), (*base.path, member(node.name.upper())))

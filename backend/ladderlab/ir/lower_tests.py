@@ -128,6 +128,7 @@ def lower_test_file(project: Project, text: str, file: str) -> TestProgram:
         fb_inits=lowered.program.fb_inits,
         fb_exits=lowered.program.fb_exits,
         mockable=True,
+        gvls=lowered.program.gvls,
     )
     return TestProgram(program, builder.tests, builder.sites, list(builder.stubs), diagnostics)
 

@@ -24,7 +24,17 @@ from .fbd import (
 )
 from .hmi import Panel
 from .ld import Box, Coil, Compare, Contact, Jump, LdBody, LdElement, LdNetwork, Parallel, Return
-from .project import PROJECT_FORMAT, Configuration, Pou, ProgramInstance, Project, Resource, Task, TestFile
+from .project import (
+    PROJECT_FORMAT,
+    Configuration,
+    GlobalVariableList,
+    Pou,
+    ProgramInstance,
+    Project,
+    Resource,
+    Task,
+    TestFile,
+)
 
 __all__ = [
     "PROJECT_FORMAT",
@@ -44,6 +54,7 @@ __all__ = [
     "FbdNetwork",
     "FbdNode",
     "FbdReturn",
+    "GlobalVariableList",
     "InputNode",
     "Jump",
     "LdBody",

@@ -97,6 +97,9 @@ class SymbolInfo(Model):
     comment: str | None
     retain: bool
     constant: bool
+    gvl: str | None = Field(
+        default=None, description="A global's global variable list (CODESYS's GVL), whose name qualifies it: GVL.x."
+    )
 
 
 class SymbolTable(Model):
@@ -422,6 +425,7 @@ class Reference(Model):
         "step",
         "return type",
         "globals",
+        "gvl",
         "types",
         "task",
         "test",

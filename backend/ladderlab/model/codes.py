@@ -101,6 +101,12 @@ _TABLE: list[tuple[str, str, Severity, str]] = [
     ),
     ("st", "ST-CALL-ARGS", "error", "The arguments of a call do not match its parameters."),
     ("st", "ST-AMBIGUOUS", "error", "An enumeration value belongs to several enumerations."),
+    (
+        "st",
+        "ST-QUALIFIED-ONLY",
+        "error",
+        "A variable of a qualified_only global variable list is used without the list's name.",
+    ),
     ("st", "ST-TYPE-MISMATCH", "error", "A value of one type is used where another type is needed."),
     ("st", "ST-IMPLICIT-CONV", "warning", "A value is widened to a larger type without an explicit conversion."),
     ("st", "ST-IMPLICIT-NARROW", "warning", "CODESYS typing: a value is narrowed to a smaller type implicitly."),

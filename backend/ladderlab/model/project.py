@@ -11,6 +11,7 @@ from .cfc import CfcBody
 from .fbd import FbdBody
 from .hmi import Panel
 from .ld import LdBody
+from .names import pou_name_problem
 from .sfc import SfcBody
 
 ProjectFormat = Literal["ladderlab/1"]
@@ -247,6 +248,41 @@ class TestFile(Model):
     _normalise_texts = field_validator("text", mode="before")(_strip_trailing_whitespace)
 
 
+#: The pragma that makes a GVL's variables usable only qualified, as CODESYS writes it above its VAR_GLOBAL
+QUALIFIED_ONLY = "{attribute 'qualified_only'}"
+
+
+class GlobalVariableList(Model):
+    """A named global variable list (GVL) as CODESYS and TwinCAT keep globals: ``gvls/<name>.st`` in the project
+    folder. Code reads its variables as ``Name.x`` or, unless ``qualified_only``, as ``x`` (docs/st.md)."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    name: str = Field(description="The list's name (an IEC identifier): the qualifier of ``Name.x``.")
+    qualified_only: bool = Field(
+        default=False, description="{attribute 'qualified_only'}: its variables are used only as ``Name.x``."
+    )
+    text: str = Field(default="", description="ST text of its VAR_GLOBAL ... END_VAR blocks, as typed.")
+
+    _normalise_texts = field_validator("text", mode="before")(_strip_trailing_whitespace)
+
+    @field_validator("name")
+    @classmethod
+    def _identifier(cls, name: str) -> str:
+        problem = pou_name_problem(name)
+        if problem is not None:
+            raise ValueError(f"{name!r} cannot name a global variable list: {problem}")
+        return name
+
+    @model_validator(mode="after")
+    def _pragma_line(self) -> GlobalVariableList:
+        """The qualified_only pragma typed as the text's first line is the flag (one form, as its file stores it)."""
+        first, _, rest = self.text.partition("\n")
+        if first.strip() == QUALIFIED_ONLY:
+            self.qualified_only, self.text = True, rest
+        return self
+
+
 class Project(Model):
     model_config = ConfigDict(extra="forbid")
 
@@ -254,6 +290,9 @@ class Project(Model):
     format: ProjectFormat = PROJECT_FORMAT
     types: str = Field(default="", description="ST text of TYPE ... END_TYPE blocks.")
     globals: str = Field(default="", description="ST text of VAR_GLOBAL ... END_VAR blocks.")
+    gvls: list[GlobalVariableList] = Field(
+        default_factory=list, description="Named global variable lists (gvls/<name>.st), in order."
+    )
     pous: list[Pou] = Field(default_factory=list)
     tasks: list[Task] = Field(
         default_factory=list, description="The tasks of a project without a configuration (one implicit resource)."
@@ -288,6 +327,21 @@ class Project(Model):
                 raise ValueError(f"two panels are called {panel.name!r} (names ignore case: they are file names)")
             seen.add(panel.name.upper())
         return panels
+
+    @field_validator("gvls")
+    @classmethod
+    def _unique_gvls(cls, gvls: list[GlobalVariableList]) -> list[GlobalVariableList]:
+        seen: set[str] = set()
+        for gvl in gvls:
+            if gvl.name.upper() in seen:
+                raise ValueError(f"two global variable lists are called {gvl.name!r} (names ignore case)")
+            seen.add(gvl.name.upper())
+        return gvls
+
+    def gvl(self, name: str) -> GlobalVariableList | None:
+        """The global variable list called ``name`` (case-insensitive)."""
+        key = name.upper()
+        return next((g for g in self.gvls if g.name.upper() == key), None)
 
     def panel(self, name: str) -> Panel | None:
         key = name.upper()

@@ -15,7 +15,8 @@ class XrefAccess(Model):
     """One place a variable occurs: its declaration, a read, a write, or a call of an FB instance."""
 
     kind: AccessKind
-    pou: str | None = Field(description="The POU, None for the global declarations (globals.st).")
+    pou: str | None = Field(description="The POU, None for the global declarations (globals.st, gvls/).")
+    gvl: str | None = Field(default=None, description="A global's declaration: its global variable list, if any.")
     network: str | None = Field(default=None, description="LD/FBD: the network's id.")
     network_number: int | None = Field(default=None, description="LD/FBD: the network's number as the editor shows it.")
     element: str | None = Field(default=None, description="LD/FBD: the element's id.")

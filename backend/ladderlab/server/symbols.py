@@ -43,12 +43,14 @@ def symbol_table(project: Project, pou_name: str) -> SymbolTable:
     key = pou.name.upper()
     info = result.pous[key]  # the checker registers every POU (the first one, like project.pou, on duplicates)
     diagnostics = [
-        d for d in result.diagnostics if (d.pou is not None and d.pou.upper() == key) or d.file in _SHARED_TEXTS
+        d
+        for d in result.diagnostics
+        if (d.pou is not None and d.pou.upper() == key) or d.file in _SHARED_TEXTS or (d.file or "").startswith("gvls/")
     ]
     return SymbolTable(
         pou=pou.name,
         symbols=[symbol_info(s) for s in info.symbols.values()],
-        globals=[symbol_info(s) for s in result.globals.values()],
+        globals=[symbol_info(s, result.listed.get(key)) for key, s in result.globals.items()],
         diagnostics=diagnostics,
     )
 
@@ -127,7 +129,12 @@ def _walk(result: CheckResult, path: str) -> tuple[t.Type, tuple[int, ...]]:
     if program is not None:
         ty: t.Type = t.FbType(program.name, pou=program)
     else:
-        if head.upper() == GLOBALS_PREFIX and rest[:1] == [("punct", ".")] and rest[1:2] and rest[1][0] == "name":
+        qualified = rest[:1] == [("punct", ".")] and rest[1:2] and rest[1][0] == "name"
+        gvl = result.gvls.get(head.upper())
+        listed = qualified and gvl is not None and rest[1][1].upper() in gvl.members
+        if qualified and gvl is not None and not listed and head.upper() != GLOBALS_PREFIX:
+            raise ApiError(404, f"the global variable list {gvl.name} has no variable {rest[1][1]!r}")
+        if qualified and (listed or head.upper() == GLOBALS_PREFIX):  # GVL_IO.x: the list's variable, GVL.x: a global
             head, rest = rest[1][1], rest[2:]
         symbol = result.globals.get(head.upper())
         if symbol is None:

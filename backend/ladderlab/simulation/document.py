@@ -12,7 +12,7 @@ from ..model import Project
 from ..model.api import PrintDocument, SymbolInfo
 from ..st.checker import check_project
 from ..st.printer import print_initializer, print_type
-from ..st.symbols import Symbol
+from ..st.symbols import GvlInfo, Symbol
 from ..storage.project_folder import revision_of
 from .library import standard_entries, user_entries
 from .xref import cross_reference
@@ -22,8 +22,9 @@ class UnknownPou(LookupError):
     """A POU asked for by name that the project does not have."""
 
 
-def symbol_info(symbol: Symbol) -> SymbolInfo:
-    """One symbol with its type and initial value as ST text (as declared, not the resolved internals)."""
+def symbol_info(symbol: Symbol, gvl: GvlInfo | None = None) -> SymbolInfo:
+    """One symbol with its type and initial value as ST text (as declared, not the resolved internals); ``gvl``: the
+    global variable list declaring it."""
     return SymbolInfo(
         name=symbol.name,
         var_class=symbol.var_class,
@@ -33,6 +34,7 @@ def symbol_info(symbol: Symbol) -> SymbolInfo:
         comment=symbol.comment,
         retain=symbol.retain,
         constant=symbol.constant,
+        gvl=gvl.name if gvl is not None else None,
     )
 
 
@@ -59,7 +61,7 @@ def print_document(project: Project, pous: list[str] | None = None, now: datetim
         pous=chosen,
         library=library,
         symbols=symbols,
-        globals=[symbol_info(s) for s in checked.globals.values()],
+        globals=[symbol_info(s, checked.listed.get(key)) for key, s in checked.globals.items()],
         xref=cross_reference(project),
     )
 

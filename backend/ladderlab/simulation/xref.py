@@ -24,7 +24,7 @@ from ..model import ld as ld_model
 from ..model.xref import AccessKind, XrefAccess, XrefEntry, XrefList
 from ..st.checker import check_project
 from ..st.printer import print_type
-from ..st.symbols import THIS, CheckResult, PouInfo, Symbol
+from ..st.symbols import THIS, CheckResult, GvlInfo, PouInfo, Symbol
 
 Key = tuple[str | None, str]
 _ROOT = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")  # (upper-case POU or None for a global, upper-case name)
@@ -34,8 +34,8 @@ def cross_reference(project: Project) -> XrefList:
     """Every variable of ``project`` with its declaration and accesses, globals first, then POU by POU."""
     checked = check_project(project)
     entries: dict[Key, XrefEntry] = {}
-    for symbol in checked.globals.values():
-        entries[(None, symbol.name.upper())] = _entry(symbol, None)
+    for key, symbol in checked.globals.items():
+        entries[(None, symbol.name.upper())] = _entry(symbol, None, checked.listed.get(key))
     for pou in project.pous:
         info = checked.pou(pou.name)
         if info is None or info.name != pou.name:
@@ -61,7 +61,9 @@ def cross_reference(project: Project) -> XrefList:
     return XrefList(entries=list(entries.values()))
 
 
-def _entry(symbol: Symbol, pou: str | None) -> XrefEntry:
+def _entry(symbol: Symbol, pou: str | None, gvl: GvlInfo | None = None) -> XrefEntry:
+    declared = _declared(symbol, pou)
+    declared.gvl = gvl.name if gvl is not None else None
     return XrefEntry(
         name=symbol.name,
         pou=pou,
@@ -69,7 +71,7 @@ def _entry(symbol: Symbol, pou: str | None) -> XrefEntry:
         type=print_type(symbol.type_spec),
         address=symbol.address,
         comment=symbol.comment,
-        accesses=[_declared(symbol, pou)],
+        accesses=[declared],
     )
 
 

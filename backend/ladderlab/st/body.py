@@ -19,6 +19,7 @@ from . import types as t
 from .calls import check_call, unreferable
 from .cases import check_case
 from .context_typing import default_type, settle, untyped_leaves, untyped_result
+from .gvls import check_unqualified, list_member
 from .interfaces import check_attempt, reference_comparison
 from .methods import check_property, is_self, own_property, this_type, unknown_member_hint
 from .rules import EnumValue, assignable_or_report, constant_value, root_name
@@ -173,6 +174,8 @@ class BodyChecker:
         symbol = self.lookup(node.name)
         if symbol is not None:
             node.ref = symbol
+            if self.result.listed:
+                check_unqualified(self, node, symbol)
             return symbol.type
         if self.pou is not None and self.pou.kind == "FUNCTION" and node.name.upper() == _result_name(self.pou):
             node.ref = self.pou
@@ -217,6 +220,9 @@ class BodyChecker:
         return t.Elementary(address.default_type)
 
     def _member(self, node: ast.Member) -> Type:
+        listed = list_member(self, node)
+        if listed is not None:
+            return listed
         qualified = self._qualified_enum_value(node)
         if qualified is not None:
             return qualified

@@ -8,6 +8,8 @@ consumes (``CheckResult``); problems are ``Diagnostic``s, never exceptions.
 
 from __future__ import annotations
 
+from collections.abc import Callable
+from functools import partial
 from typing import Any
 
 from ..iec import stdlib
@@ -29,6 +31,7 @@ from .fb_init import (
     instance_spec,
     project_blocks,
 )
+from .gvls import clashing_name, gvl_texts, register_lists, twice_hint
 from .il_check import check_il_body
 from .il_parser import IlBody, parse_il
 from .inheritance import abstract_instance, check_overrides, link_bases
@@ -106,11 +109,13 @@ class ProjectChecker:
     # ------------------------------------------------------------ driver
     def run(self) -> CheckResult:
         types = self._parse(_parse_types, self.project.types, "types", None)
-        globals_ = [  # the project's, the configuration's and each resource's VAR_GLOBAL blocks, with their file
-            (block, file)
-            for text, file in [(self.project.globals, "globals"), *configuration_globals(self.project)]
+        texts = [(self.project.globals, "globals"), *gvl_texts(self.project), *configuration_globals(self.project)]
+        globals_ = [  # the project's, each GVL's, the configuration's and each resource's VAR_GLOBAL blocks, with
+            (block, file)  # their file
+            for text, file in texts
             for block in self._parse(parse_declarations, text, file, None) or []
         ]
+        self._gvl_files = register_lists(self.result, self.project)
         declarations, bodies, actions = {}, {}, {}
         for pou in self.project.pous:
             declarations[pou.name] = (
@@ -134,6 +139,11 @@ class ProjectChecker:
         self._register_types([item for item in types or [] if isinstance(item, ast.TypeBlock)])
         declare_interfaces(self, interfaces)
         self._declare_globals([(b, f) for b, f in globals_ if (b, f) not in constants])
+        for file, gvl in self._gvl_files.items():
+            clash = clashing_name(self.result, gvl)
+            if clash is not None:
+                message = f"the global variable list {gvl.name} has the name of {clash}: rename one"
+                self._reporter(file, None)("ST-DUPLICATE", message, None)
         for pou in self.project.pous:
             self._declare_pou(pou, declarations[pou.name])
         for pou in self.project.pous:
@@ -424,9 +434,13 @@ class ProjectChecker:
                 )
                 continue
             before = set(self.result.globals)
-            self.declare_block(block, self.result.globals, checker, None)
+            gvl = self._gvl_files.get(file)
+            twice = partial(twice_hint, self.result, in_list=gvl is not None)
+            self.declare_block(block, self.result.globals, checker, None, twice=twice)
             for key in self.result.globals.keys() - before:
                 self._check_global(self.result.globals[key], checker)
+                if gvl is not None:
+                    gvl.members[key], self.result.listed[key] = self.result.globals[key], gvl
 
     def _check_global(self, symbol: Symbol, checker: BodyChecker) -> None:
         program = self.result.pous.get(symbol.name.upper())
@@ -505,8 +519,10 @@ class ProjectChecker:
         checker: BodyChecker,
         pou: PouInfo | None,
         record: bool = True,
+        twice: Callable[[str], str] | None = None,
     ) -> None:
-        """Declare ``block``'s variables in ``table``; ``record``: check their FB_init arguments (st/fb_init.py)."""
+        """Declare ``block``'s variables in ``table``; ``record``: check their FB_init arguments (st/fb_init.py);
+        ``twice(name)`` adds to the message of a name declared twice."""
         report = checker.report
         for decl in block.decls:
             spec, written = instance_spec(decl.type, project_blocks(self.result.pous))
@@ -523,7 +539,8 @@ class ProjectChecker:
                     self._check_address(block, name, ty, pou, report)
                 key = (name.name or name.address or "").upper()
                 if key in table:
-                    report("ST-DUPLICATE", f"'{name.name or name.address}' is declared twice", name)
+                    written = name.name or name.address or ""
+                    report("ST-DUPLICATE", f"'{written}' is declared twice" + (twice(key) if twice else ""), name)
                     continue
                 symbol = Symbol(
                     name.name or name.address,

@@ -14,6 +14,7 @@ from ..model.diagnostics import Diagnostic
 from ..model.project import (
     Accessor,
     Configuration,
+    GlobalVariableList,
     Method,
     Pou,
     PouAction,
@@ -24,6 +25,7 @@ from ..model.project import (
     Task,
 )
 from . import ast
+from .gvl_text import gvl_heading
 from .il_parser import blank_il_bodies
 from .parser import parse_source
 from .pragmas import block_text
@@ -76,8 +78,23 @@ def source_to_project(
     source = _Text(text)
     diagnostics = list(parsed.diagnostics)
     types, globals_, pous, configurations = [], [], [], []
+    gvls: list[tuple[str, bool, list[str]]] = []  # named lists: (name, qualified_only, block texts)
+    listing = False  # the VAR_GLOBAL blocks go on the last list (no other item since its pragma)
+    end = (1, 1)
     for item in parsed.ast.items:
-        if isinstance(item, ast.TypeBlock):
+        before, end = source.between(end, item.span[:2]), (item.span.end_line, item.span.end_column)
+        heading = gvl_heading(before) if isinstance(item, ast.VarBlock) else None
+        known = next((g for g in gvls if heading and g[0].upper() == heading[0].upper()), None)
+        if known is not None:  # the list again: its blocks join it (pydantic refuses two lists of a name)
+            message = f"a second global variable list called {known[0]}: its blocks are added to the first"
+            diagnostics.append(Diagnostic(code="ST-DUPLICATE", message=message, line=item.span.line))
+            gvls.append(gvls.pop(gvls.index(known)))
+        elif heading is not None:
+            gvls.append((*heading, []))
+        listing = isinstance(item, ast.VarBlock) and (listing or heading is not None)
+        if listing:
+            gvls[-1][2].append(source.of(item))
+        elif isinstance(item, ast.TypeBlock):
             head = source.between(item.span[:2], item.decls[0].span[:2]) if item.decls else ""
             types.append(block_text(item, source.of(item), head))
         elif isinstance(item, ast.InterfaceDecl):  # INTERFACEs live in the types text
@@ -96,7 +113,12 @@ def source_to_project(
         diagnostics.append(_problem(extra, "a project runs one CONFIGURATION: this second one is left out"))
     configuration = _configuration(configurations[0], source, diagnostics) if configurations else None
     project = Project(
-        name=name, types="\n".join(types), globals="\n".join(globals_), pous=pous, configuration=configuration
+        name=name,
+        types="\n".join(types),
+        globals="\n".join(globals_),
+        gvls=[GlobalVariableList(name=n, qualified_only=q, text="\n".join(blocks)) for n, q, blocks in gvls],
+        pous=pous,
+        configuration=configuration,
     )
     return project, diagnostics
 

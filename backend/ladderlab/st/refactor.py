@@ -22,6 +22,7 @@ from ..model.names import pou_name_problem
 from ..model.project import Project
 from . import ast
 from .comments import blank_nested_comments
+from .gvls import gvl_file
 from .member_types import ProjectTypes, declared_types
 from .parser import parse_source
 
@@ -32,6 +33,8 @@ _TOKEN = re.compile(
     r"""|(?P<name>[A-Za-z_][A-Za-z0-9_]*)"""
 )
 _MEMBER = re.compile(r"\.\s*$")
+#: ``GVL_IO.`` right before a name: the name of a list as its qualifier (not itself a member)
+_LIST_QUALIFIER = re.compile(r"(?<![.\w])([A-Za-z_][A-Za-z0-9_]*)\s*\.\s*$")
 #: The first name of a variable path (``Main`` of ``Main.T1.Q``, ``Arr`` of ``Arr[2]``): a global or a program.
 _PATH_HEAD = re.compile(r"^\s*([A-Za-z_][A-Za-z0-9_]*)(?=\s*(?:$|[.\[]))")
 
@@ -39,8 +42,9 @@ _PATH_HEAD = re.compile(r"^\s*([A-Za-z_][A-Za-z0-9_]*)(?=\s*(?:$|[.\[]))")
 _OPERAND_KEYS = ("var", "left", "right", "call", "instance", "expr")
 
 
-def name_spans(text: str, name: str) -> list[tuple[int, int]]:
-    """Start and end offsets of ``name`` used as an identifier in ST ``text`` (not as a member after ``.``)."""
+def name_spans(text: str, name: str, lists: frozenset[str] = frozenset()) -> list[tuple[int, int]]:
+    """Start and end offsets of ``name`` used as an identifier in ST ``text`` (not as a member after ``.``, except
+    after the name of one of the global variable lists ``lists`` (upper case), ``GVL.name``)."""
     key = name.upper()
     scanned = blank_nested_comments(text)  # same length: offsets stay those of ``text``
     spans = []
@@ -48,9 +52,24 @@ def name_spans(text: str, name: str) -> list[tuple[int, int]]:
         if match.group("name") is None or match.group("name").upper() != key:
             continue
         if _MEMBER.search(scanned, 0, match.start()):
-            continue
+            before = _LIST_QUALIFIER.search(scanned, 0, match.start()) if lists else None
+            if before is None or before.group(1).upper() not in lists:
+                continue
         spans.append((match.start(), match.end()))
     return spans
+
+
+class ListedName(str):
+    """A global variable declared in the global variable lists ``lists`` (upper case): renamed bare and as
+    ``GVL.name`` (st/gvls.py)."""
+
+    lists: frozenset[str]
+
+    @classmethod
+    def of(cls, name: str, lists: frozenset[str]) -> ListedName:
+        listed = cls(name)
+        listed.lists = lists
+        return listed
 
 
 def rename_in_text(text: str, old: str, new: str) -> str:
@@ -71,6 +90,8 @@ Target: TypeAlias = "str | MemberUses"
 
 
 def _spans(text: str, old: Target) -> list[tuple[int, int]]:
+    if isinstance(old, ListedName):
+        return name_spans(text, old, old.lists)
     return name_spans(text, old) if isinstance(old, str) else old.spans(text)
 
 
@@ -191,18 +212,26 @@ def _interface_methods(types: str, group: frozenset[str], old: str, new: str, fo
 def references(project: Project, name: str) -> list[Reference]:
     """Every place in ``project`` that uses ``name``, except the definition of a POU called ``name`` itself."""
     found: list[Reference] = []
-    _visit(project.model_dump(by_alias=True), name, name, found, skip_pou=name)
+    data = project.model_dump(by_alias=True)
+    _visit(data, _listed(data, name), name, found, skip_pou=name)
     return found
 
 
+def _listed(data: dict[str, Any], name: str) -> str:
+    """``name``, as a ``ListedName`` when global variable lists of the dumped project declare it."""
+    lists = frozenset(g["name"].upper() for g in data["gvls"] if name.upper() in declared_types(g["text"]))
+    return ListedName.of(name, lists) if lists else name
+
+
 def rename(project: Project, old: str, new: str) -> tuple[Project, list[Reference]]:
-    """``project`` with ``old`` renamed to ``new`` everywhere (a POU called ``old`` too), and what changed."""
+    """``project`` with ``old`` renamed to ``new`` everywhere (a POU or global variable list called ``old`` too),
+    and what changed."""
     data = project.model_dump(by_alias=True)
     changes: list[Reference] = []
-    _visit(data, old, new, changes, skip_pou=None)
-    for pou in data["pous"]:
-        if pou["name"].upper() == old.upper():
-            pou["name"] = new
+    _visit(data, _listed(data, old), new, changes, skip_pou=None)
+    for item in [*data["pous"], *data["gvls"]]:
+        if item["name"].upper() == old.upper():
+            item["name"] = new
     return Project.model_validate(data), changes
 
 
@@ -214,6 +243,9 @@ def new_name_problem(project: Project, old: str, new: str) -> str | None:
     other = project.pou(new)
     if other is not None and other.name.upper() != old.upper():
         return f"there is already a POU called {other.name}"
+    gvl = project.gvl(new)
+    if gvl is not None and gvl.name.upper() != old.upper():
+        return f"there is already a global variable list called {gvl.name}"
     return None
 
 
@@ -268,6 +300,8 @@ def _visit(data: dict[str, Any], old: str, new: str, found: list[Reference], ski
     (``new == old`` only finds). The POU called ``skip_pou`` is left out (its definition is no reference)."""
     for part in ("globals", "types"):
         data[part] = _text(data[part], old, new, found, Reference(part=part))
+    for gvl in data["gvls"]:
+        gvl["text"] = _text(gvl["text"], old, new, found, Reference(part="gvl", file=gvl_file(gvl["name"])))
     for pou in data["pous"]:
         if skip_pou is not None and pou["name"].upper() == skip_pou.upper():
             continue

@@ -155,6 +155,16 @@ class PropertyRef:
     setter: PouInfo | None
 
 
+@dataclass(eq=False)
+class GvlInfo:
+    """A named global variable list (``Project.gvls``): its variables, which are also in ``CheckResult.globals``
+    (one global storage: a name is declared by one list only)."""
+
+    name: str
+    qualified_only: bool
+    members: dict[str, Symbol] = field(default_factory=dict)
+
+
 @dataclass
 class CheckResult:
     diagnostics: list[Diagnostic] = field(default_factory=list)
@@ -162,6 +172,8 @@ class CheckResult:
     globals: dict[str, Symbol] = field(default_factory=dict)
     pous: dict[str, PouInfo] = field(default_factory=dict)
     interfaces: dict[str, PouInfo] = field(default_factory=dict)  # INTERFACEs (kind INTERFACE) by upper-case name
+    gvls: dict[str, GvlInfo] = field(default_factory=dict)  # named global variable lists by upper-case name
+    listed: dict[str, GvlInfo] = field(default_factory=dict)  # a GVL's variable (upper case) -> its list
     configuration: Any = None  # configuration.ConfigurationInfo: the instances and tasks the project runs
 
     @property

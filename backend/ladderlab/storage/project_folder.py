@@ -4,7 +4,9 @@ Layout::
 
     project.json        name, format, POU order, tasks, configuration, vendor libraries used, typing
     types.st            TYPE ... END_TYPE blocks
-    globals.st          VAR_GLOBAL ... END_VAR blocks
+    globals.st          VAR_GLOBAL ... END_VAR blocks (the globals of no named list)
+    gvls/<name>.st      a named global variable list: its VAR_GLOBAL blocks, under {attribute 'qualified_only'}
+                        when it has it, as CODESYS shows a GVL (project.json lists their order)
     pous/<name>.st      ST POUs as complete IEC text (PROGRAM ... END_PROGRAM)
     pous/<name>.plant.st ST plants (a PROGRAM in IEC text; the file name makes it a plant)
     pous/<name>.il      IL POUs as complete IEC text, the body in IL (docs/il.md)
@@ -31,9 +33,9 @@ from typing import Any
 
 from pydantic import ValidationError
 
-from ..model import Diagnostic, Panel, Pou, Project, Task, TestFile
-from ..model.names import test_file_name_problem
-from ..model.project import TEXT_LANGUAGES
+from ..model import Diagnostic, GlobalVariableList, Panel, Pou, Project, Task, TestFile
+from ..model.names import pou_name_problem, test_file_name_problem
+from ..model.project import QUALIFIED_ONLY, TEXT_LANGUAGES
 from .errors import ProjectLoadError, json_text_problem, validation_diagnostics
 from .st_text import StTextError, compose_pou_text, parse_pou_text, round_trips
 from .text_files import HINT, decode_text
@@ -44,6 +46,7 @@ GLOBALS_FILE = "globals.st"
 POUS_DIR = "pous"
 POU_SUFFIXES = (".st", ".plant.st", ".st.json", ".il", ".il.json", ".ld.json", ".fbd.json", ".cfc.json", ".sfc.json")
 HMI_DIR = "hmi"
+GVLS_DIR = "gvls"
 EXERCISE_FILE = "EXERCISE.md"
 TESTS_DIR = "tests"
 HIDDEN_TESTS_DIR = "tests/hidden"
@@ -84,6 +87,8 @@ def project_files(project: Project) -> dict[str, str]:
         meta["configuration"] = configuration
     if project.panels:
         meta["panels"] = [p.name for p in project.panels]
+    if project.gvls:
+        meta["gvls"] = [g.name for g in project.gvls]
     if project.libraries:
         meta["libraries"] = list(project.libraries)
     if project.typing != "iec":
@@ -93,6 +98,8 @@ def project_files(project: Project) -> dict[str, str]:
         TYPES_FILE: _text_file(project.types),
         GLOBALS_FILE: _text_file(project.globals),
     }
+    for gvl in project.gvls:
+        files[gvl_path(gvl.name)] = gvl_text(gvl)
     for pou in project.pous:
         files.update([pou_file(pou)])
     for panel in project.panels:
@@ -102,6 +109,15 @@ def project_files(project: Project) -> dict[str, str]:
     for test in project.tests:
         files[test_path(test.name)] = _text_file(test.text)
     return files
+
+
+def gvl_path(name: str) -> str:
+    return f"{GVLS_DIR}/{name}.st"
+
+
+def gvl_text(gvl: GlobalVariableList) -> str:
+    """A GVL file: its text under the qualified_only pragma when it has it, as the list reads in CODESYS."""
+    return _text_file("\n".join(filter(None, [QUALIFIED_ONLY if gvl.qualified_only else "", gvl.text])))
 
 
 def test_path(name: str) -> str:
@@ -139,6 +155,8 @@ def is_project_file(rel: str) -> bool:
     if rel in (PROJECT_FILE, TYPES_FILE, GLOBALS_FILE, EXERCISE_FILE):
         return True
     folder, _, name = rel.partition("/")
+    if folder == GVLS_DIR:  # gvls/<name>.st, a GVL's name
+        return name.endswith(".st") and pou_name_problem(name[: -len(".st")]) is None
     if folder == HMI_DIR:  # hmi/<name>.json, a panel's name
         return name.endswith(".json") and re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]{0,63}\.json", name) is not None
     if folder == TESTS_DIR:  # tests/<name>.st; never tests/hidden/ (a teacher's files, not the model's)
@@ -188,6 +206,7 @@ def read_project_folder(folder: Path, encoding: str | None = None, hint: str = H
         order = []
     pous = [pou for pou in (_read_pou(folder, name, read) for name in _pou_names(folder, order)) if pou]
     panels = _read_panels(read, meta.get("panels", []))
+    gvls = _read_gvls(read, meta.get("gvls", []))
     data = {
         "name": meta.get("name"),
         "format": meta.get("format"),
@@ -209,6 +228,7 @@ def read_project_folder(folder: Path, encoding: str | None = None, hint: str = H
     assert project is not None
     project.pous = pous
     project.panels = panels
+    project.gvls = gvls
     project.tests = _read_tests(read, TESTS_DIR)
     if problems:
         raise ProjectLoadError(problems)
@@ -243,6 +263,39 @@ def hidden_tests(folder: Path, encoding: str | None = None) -> list[TestFile]:
     """A teacher's hidden test files of a project folder (``tests/hidden/<name>.st``); unreadable ones are left
     out (the grade counts what runs)."""
     return _read_tests(_Reader(folder, encoding, HINT, []), HIDDEN_TESTS_DIR)
+
+
+def _read_gvls(read: _Reader, order: object) -> list[GlobalVariableList]:
+    """The GVLs in project.json order, then any other ``gvls/*.st`` (added by hand), sorted."""
+    folder, problems = read.folder, read.problems
+    if not isinstance(order, list) or not all(isinstance(n, str) for n in order):
+        message = "expected a list of global variable list names"
+        problems.append(Diagnostic(code="BAD-FILE", file=PROJECT_FILE, json_path="$.gvls", message=message))
+        return []
+    bad = [name for name in order if not is_project_file(gvl_path(name))]
+    if bad:
+        message = f"{bad[0]!r} is not a global variable list name: {pou_name_problem(bad[0])}"
+        problems.append(Diagnostic(code="BAD-FILE", file=PROJECT_FILE, json_path="$.gvls", message=message))
+        return []
+    gvls_dir = folder / GVLS_DIR
+    if not _inside(folder, gvls_dir):
+        problems.append(_outside(GVLS_DIR))
+        return []
+    listed = sorted(p.name for p in gvls_dir.iterdir()) if gvls_dir.is_dir() else []
+    found = [name[: -len(".st")] for name in listed if is_project_file(f"{GVLS_DIR}/{name}")]
+    known = {name.upper() for name in order}
+    names = list(dict.fromkeys([*order, *(n for n in found if n.upper() not in known)]))
+    gvls = []
+    for name in names:
+        rel = gvl_path(name)
+        if not (folder / rel).is_file():
+            message = f"global variable list {name!r} is listed in project.json but has no file {rel}"
+            problems.append(Diagnostic(code="BAD-FILE", file=rel, message=message))
+            continue
+        text = read.text(folder / rel, rel)
+        if text is not None:
+            gvls.append(GlobalVariableList(name=name, text=text))  # its pragma line sets the flag
+    return gvls
 
 
 def _read_panels(read: _Reader, order: object) -> list[Panel]:

@@ -21,6 +21,7 @@ from .errors import AlreadyExistsError, ConflictError, NotFoundError, StorageErr
 from .names import check_pou_name, check_project_name, check_test_file_name
 from .project_folder import (
     EXERCISE_FILE,
+    GVLS_DIR,
     HMI_DIR,
     POU_SUFFIXES,
     POUS_DIR,
@@ -225,13 +226,14 @@ class Workspace:
                 for path in tests_dir.iterdir()
                 if path.is_file() and path.name.endswith(TEST_SUFFIX) and f"{TESTS_DIR}/{path.name}" not in files
             )
-        hmi_dir = folder / HMI_DIR  # panels the project no longer has, and a removed exercise statement
-        if hmi_dir.is_dir():
-            deletes += sorted(
-                f"{HMI_DIR}/{path.name}"
-                for path in hmi_dir.iterdir()
-                if is_project_file(f"{HMI_DIR}/{path.name}") and f"{HMI_DIR}/{path.name}" not in files
-            )
+        for kept in (HMI_DIR, GVLS_DIR):  # panels and GVLs the project no longer has
+            kept_dir = folder / kept
+            if kept_dir.is_dir():
+                deletes += sorted(
+                    f"{kept}/{path.name}"
+                    for path in kept_dir.iterdir()
+                    if is_project_file(f"{kept}/{path.name}") and f"{kept}/{path.name}" not in files
+                )
         if EXERCISE_FILE not in files and (folder / EXERCISE_FILE).is_file():
             deletes.append(EXERCISE_FILE)
         if writes or deletes:

@@ -1,5 +1,6 @@
-// Editors of the project's own parts: the global variables (the declarations table and text of the
-// POUs; a row is renamed everywhere and deleted through the tree's dialogs, listing its uses), the types (text with a list of the types and a form that adds a STRUCT, enumeration, array,
+// Editors of the project's own parts: the global variables and each global variable list (the declarations
+// table and text of the POUs; a row is renamed everywhere and deleted through the tree's dialogs, listing its
+// uses), the types (text with a list of the types and a form that adds a STRUCT, enumeration, array,
 // subrange or alias) and the tasks (cyclic interval or SINGLE event, priority, watchdog, the programs each
 // runs in order, each run's instance name and parameter bindings).
 // Each shows the live check of the working copy where it applies, like the POU editors.
@@ -16,7 +17,9 @@ import { usePanels } from "../store/panels";
 import { LazyStEditor, LOADING } from "./lazy";
 import { useLiveCheck } from "../store/useLiveCheck";
 import { useOnline } from "../online/store";
-import { taskIndexOf, type ProjectPart } from "../store/parts";
+import { taskIndexOf } from "../store/parts";
+import { globalsText } from "../store/globals";
+import { gvlOf, gvlTab, withGvlChange } from "../store/gvls";
 import { structMembers, TYPE_KINDS, typeRows, withNewType, withStructMembers, type TypeKind } from "../store/types";
 import type { DeclRow } from "../iec/declarations";
 import { useWorkspace, workspaceStore } from "../store/project";
@@ -34,8 +37,8 @@ function usePartDiagnostics(): Diagnostic[] {
   return useLiveCheck(project);
 }
 
-/** The line a clicked diagnostic of this part asks to reveal. */
-function usePartFocus(part: ProjectPart) {
+/** The line a clicked diagnostic of this part (or global variable list tab) asks to reveal. */
+function usePartFocus(part: string) {
   const focus = usePanels((s) => s.focus);
   // derived outside the selector: a selector returning a new object every time renders without end
   return useMemo(
@@ -47,20 +50,56 @@ function usePartFocus(part: ProjectPart) {
 const readOnlyWhenOnline = (phase: string) => (phase === "offline" ? null : "Online: go offline to edit.");
 
 export function GlobalsView() {
+  return <GlobalDeclarations list={null} />;
+}
+
+/** A global variable list (CODESYS's GVL): its qualified_only option and its variables, as the Global variables
+ * editor shows those of no list. */
+export function GvlView({ name }: { name: string }) {
+  const gvl = useWorkspace((s) => gvlOf(s.project, name));
+  const setProjectPart = useWorkspace((s) => s.setProjectPart);
+  const phase = useOnline((s) => s.phase);
+  if (!gvl) return <p className="tree-empty">There is no global variable list called {name}.</p>;
+  const readOnly = readOnlyWhenOnline(phase);
+  return (
+    <div className="pou-view part-view gvl-view" role="region" aria-label={`Global variable list ${gvl.name}`}>
+      <label className="gvl-option" title={readOnly ?? undefined}>
+        <input
+          type="checkbox"
+          checked={gvl.qualified_only ?? false}
+          disabled={readOnly !== null}
+          onChange={(e) =>
+            setProjectPart(gvlTab(gvl.name), (p) => withGvlChange(p, gvl.name, { qualified_only: e.target.checked }))
+          }
+        />{" "}
+        qualified_only: its variables are used only as {gvl.name}.name
+      </label>
+      <GlobalDeclarations list={gvl.name} />
+    </div>
+  );
+}
+
+/** The declarations table and text of the globals of no list (`list` null) or of one global variable list; a row
+ * is renamed everywhere and deleted through the tree's dialogs. */
+function GlobalDeclarations({ list }: { list: string | null }) {
   const [renaming, setRenaming] = useState<string | null>(null);
   const [removing, setRemoving] = useState<string | null>(null);
-  const removal = useMemo(() => (removing ? globalOperations(removing) : null), [removing]);
-  const text = useWorkspace((s) => s.project?.globals ?? "");
+  const removal = useMemo(() => (removing ? globalOperations(removing, list) : null), [removing, list]);
+  const text = useWorkspace((s) => (s.project ? globalsText(s.project, list) : ""));
+  const setProjectPart = useWorkspace((s) => s.setProjectPart);
   const setGlobals = useWorkspace((s) => s.setGlobals);
+  const onChange = (next: string) =>
+    list === null ? setGlobals(next) : setProjectPart(gvlTab(list), (p) => withGvlChange(p, list, { text: next }));
   const types = useDeclarableTypes();
-  const diagnostics = usePartDiagnostics().filter((d) => d.file === "globals");
-  const focus = usePartFocus("part:globals");
+  const file = list === null ? "globals" : `gvls/${list}`;
+  const diagnostics = usePartDiagnostics().filter((d) => d.file === file);
+  const focus = usePartFocus(list === null ? "part:globals" : gvlTab(list));
   const phase = useOnline((s) => s.phase);
   return (
     <div className="pou-view part-view" aria-label="Global variables editor" role="region">
       <DeclarationsEditor
         text={text}
-        onChange={setGlobals}
+        onChange={onChange}
         diagnostics={diagnostics}
         types={types}
         focus={focus}

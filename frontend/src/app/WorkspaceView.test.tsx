@@ -69,6 +69,7 @@ describe("app shell", () => {
       "Panels",
       "Exercise",
       "Project",
+      "Global variable lists",
       "Tasks",
       "Tests",
     ]);

@@ -19,7 +19,7 @@ import type { Diagnostic } from "../generated/api";
 import type { LdBody, Pou, Project, TestFile } from "../generated/api";
 import { LdEditor } from "../ld/editor/LdEditor";
 import type { History } from "../store/history";
-import { operandPath } from "../online/monitor";
+import { operandPath, setGlobalListNames } from "../online/monitor";
 import { onlineStore, useOnline } from "../online/store";
 import { SimulationBar } from "../online/SimulationBar";
 import { HistoryBanner } from "../online/HistoryBar";
@@ -61,6 +61,8 @@ import { PouActions } from "../tree/PouActions";
 import { KindPicker } from "../tree/kinds";
 import { TestFileActions } from "../tests/TestFileActions";
 import { isProjectPart, PART_LABELS, PROJECT_PARTS, type ProjectPart } from "../store/parts";
+import { gvlNameOf, isGvlTab } from "../store/gvls";
+import { GvlsTree } from "../tree/GvlsTree";
 import { PouMembers } from "../tree/PouMembers";
 import { typeRows } from "../store/types";
 import { keepSession, restoreSession, type SessionStores } from "./session";
@@ -74,6 +76,7 @@ const TestFileView = lazy(() => import("./StViews").then((m) => ({ default: m.Te
 const FbdPouView = lazy(() => import("../fbd/FbdPouView").then((m) => ({ default: m.FbdPouView })));
 const ShellTab = lazy(() => import("../hmi/ShellTab").then((m) => ({ default: m.ShellTab })));
 const GlobalsView = lazy(() => import("./ProjectParts").then((m) => ({ default: m.GlobalsView })));
+const GvlView = lazy(() => import("./ProjectParts").then((m) => ({ default: m.GvlView })));
 const TypesView = lazy(() => import("./ProjectParts").then((m) => ({ default: m.TypesView })));
 const TasksView = lazy(() => import("./ProjectParts").then((m) => ({ default: m.TasksView })));
 const LibrariesView = lazy(() => import("../libraries/LibrariesView").then((m) => ({ default: m.LibrariesView })));
@@ -340,6 +343,7 @@ function ProjectTree() {
           ))}
         </ul>
       </section>
+      <GvlsTree />
       <TasksSection project={project} />
       <TestFilesTree />
     </nav>
@@ -483,6 +487,16 @@ function ProjectPartView({ part }: { part: ProjectPart }) {
         ) : (
           <TasksView />
         )}
+      </Suspense>
+    </ViewBoundary>
+  );
+}
+
+function GvlPartView({ name }: { name: string }) {
+  return (
+    <ViewBoundary name={`The global variable list ${name}`}>
+      <Suspense fallback={LOADING}>
+        <GvlView name={name} />
       </Suspense>
     </ViewBoundary>
   );
@@ -643,6 +657,12 @@ export function WorkspaceView() {
   const [panelsHidden, togglePanels] = useHidden("panels");
   const [help, setHelp] = useState(false);
 
+  // Online paths name a list's variable by its own name (GVL_IO.bStart is BSTART): pathKey needs the lists.
+  const gvls = project?.gvls;
+  useEffect(() => {
+    setGlobalListNames((gvls ?? []).map((g) => g.name));
+  }, [gvls]);
+
   // A save changes the project's POU count, revision and time: the project list shows them.
   useEffect(() => {
     if (revision) void appStore.getState().loadProjects();
@@ -782,7 +802,11 @@ export function WorkspaceView() {
         {name ? (
           <ExportMenu
             project={name}
-            pou={active && !isTestPath(active) && !isShellTab(active) && !isProjectPart(active) ? active : null}
+            pou={
+              active && !isTestPath(active) && !isShellTab(active) && !isProjectPart(active) && !isGvlTab(active)
+                ? active
+                : null
+            }
             unsaved={changed.length > 0}
           />
         ) : null}
@@ -845,6 +869,8 @@ export function WorkspaceView() {
             </Suspense>
           ) : isProjectPart(active) ? (
             <ProjectPartView key={active} part={active} />
+          ) : isGvlTab(active) ? (
+            <GvlPartView key={active} name={gvlNameOf(active)} />
           ) : isTestPath(active) ? (
             <Suspense fallback={LOADING}>
               <TestFileView key={active} path={active} />

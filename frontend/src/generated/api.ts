@@ -1577,6 +1577,30 @@ export interface components {
        */
       type: "return";
     };
+    /**
+     * GlobalVariableList
+     * @description A named global variable list (GVL) as CODESYS and TwinCAT keep globals: ``gvls/<name>.st`` in the project
+     *     folder. Code reads its variables as ``Name.x`` or, unless ``qualified_only``, as ``x`` (docs/st.md).
+     */
+    GlobalVariableList: {
+      /**
+       * Name
+       * @description The list's name (an IEC identifier): the qualifier of ``Name.x``.
+       */
+      name: string;
+      /**
+       * Qualified Only
+       * @description {attribute 'qualified_only'}: its variables are used only as ``Name.x``.
+       * @default false
+       */
+      qualified_only?: boolean;
+      /**
+       * Text
+       * @description ST text of its VAR_GLOBAL ... END_VAR blocks, as typed.
+       * @default
+       */
+      text?: string;
+    };
     /** HTTPValidationError */
     HTTPValidationError: {
       /** Detail */
@@ -2634,6 +2658,11 @@ export interface components {
        */
       globals?: string;
       /**
+       * Gvls
+       * @description Named global variable lists (gvls/<name>.st), in order.
+       */
+      gvls?: components["schemas"]["GlobalVariableList"][];
+      /**
        * Libraries
        * @description Vendor compatibility libraries the project uses; a POU of the project shadows a library function of the same name.
        */
@@ -2823,6 +2852,7 @@ export interface components {
         | "step"
         | "return type"
         | "globals"
+        | "gvl"
         | "types"
         | "task"
         | "test"
@@ -3521,6 +3551,11 @@ export interface components {
       /** Constant */
       constant: boolean;
       /**
+       * Gvl
+       * @description A global's global variable list (CODESYS's GVL), whose name qualifies it: GVL.x.
+       */
+      gvl?: string | null;
+      /**
        * Initial
        * @description Declared initial value (or the user type's), as ST text; null means the type's default.
        */
@@ -3949,6 +3984,11 @@ export interface components {
        */
       element?: string | null;
       /**
+       * Gvl
+       * @description A global's declaration: its global variable list, if any.
+       */
+      gvl?: string | null;
+      /**
        * Kind
        * @enum {string}
        */
@@ -3980,7 +4020,7 @@ export interface components {
       path: string;
       /**
        * Pou
-       * @description The POU, None for the global declarations (globals.st).
+       * @description The POU, None for the global declarations (globals.st, gvls/).
        */
       pou: string | null;
     };
@@ -4051,6 +4091,7 @@ export type FbdLabel = components["schemas"]["FbdLabel"];
 export type FbdNetwork = components["schemas"]["FbdNetwork"];
 export type FbdOrder = components["schemas"]["FbdOrder"];
 export type FbdReturn = components["schemas"]["FbdReturn"];
+export type GlobalVariableList = components["schemas"]["GlobalVariableList"];
 export type HttpValidationError = components["schemas"]["HTTPValidationError"];
 export type Health = components["schemas"]["Health"];
 export type HistoryDiff = components["schemas"]["HistoryDiff"];

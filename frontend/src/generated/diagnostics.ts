@@ -1261,7 +1261,7 @@ export const DIAGNOSTICS = {
       example: "VAR speed : INT; Speed : REAL; END_VAR",
       example_language: "st",
       example_note: "",
-      fix: "rename one of them (IEC names ignore case). Standard function and FB names (TON, ADD ...) cannot be redefined either.",
+      fix: "rename one of them (IEC names ignore case). Standard function and FB names (TON, ADD ...) cannot be redefined either; CODESYS's `TIME` can, and under CODESYS typing so can seed 000's `MULTIME` and `DIVTIME`.",
       severity: "error",
       summary: "A name is declared twice in the same scope.",
     },
@@ -1413,7 +1413,7 @@ export const DIAGNOSTICS = {
       example: "IF Start THEN\n    Motor := TRUE\nEND_IF;\nx := T#2 s;",
       example_language: "st",
       example_note: "",
-      fix: "the message says what was expected where: here `;` after `TRUE`, and `'T#2 s' is not a valid TIME literal: a duration is T# then numbers with the units d, h, m, s, ms (largest first, no spaces), e.g. T#2s, ...`. A `;` missing only before `END_IF`, `END_FOR` ... is a warning.",
+      fix: "the message says what was expected where: here `;` after `TRUE`, and `'T#2 s' is not a valid TIME literal: a duration is T# then numbers with the units d, h, m, s, ms (largest first, no spaces), e.g. T#2s, ...`. A `;` missing only before `END_IF`, `END_FOR` ... is a warning; under CODESYS typing so is a `;` missing after `END_IF`, `END_CASE`, `END_FOR`, `END_WHILE` or `END_REPEAT` before another statement (CODESYS accepts it).",
       severity: "error",
       summary: "The text is not valid Structured Text at this place.",
     },
@@ -1440,6 +1440,18 @@ export const DIAGNOSTICS = {
       fix: "move the attribute above the TYPE declaration of the STRUCT it should pack, or remove it.",
       severity: "warning",
       summary: "A pragma stands where it has no effect.",
+    },
+    "ST-QUALIFIED-ONLY": {
+      anchor: "st-qualified-only",
+      area: "st",
+      example: "IF bStart THEN",
+      example_language: "st",
+      example_note:
+        "with `bStart` declared in the global variable list `GVL_IO`, which has `{attribute 'qualified_only'}`.",
+      fix: 'name the list, as CODESYS requires: `IF GVL_IO.bStart THEN` (docs/st.md, "Global variable lists").',
+      severity: "error",
+      summary:
+        "A variable of a qualified_only global variable list is used without the list's name.",
     },
     "ST-RANGE": {
       anchor: "st-range",

@@ -7,6 +7,9 @@ import {
   haltedStack,
   keepSubscribed,
   LOG_LIMIT,
+  operandPath,
+  pathKey,
+  setGlobalListNames,
   type MonitorState,
 } from "./monitor";
 import { parseServerMessage, type ServerMessage, type ValuesMessage } from "./protocol";
@@ -145,5 +148,17 @@ describe("parseServerMessage", () => {
     expect(parseServerMessage('{"type":"values"}')).toBeNull();
     expect(parseServerMessage("not json")).toBeNull();
     expect(parseServerMessage("[1]")).toBeNull();
+  });
+});
+
+describe("paths into global variable lists", () => {
+  it("name a list's variable as the server does, by its own name", () => {
+    setGlobalListNames(["GVL_IO"]);
+    expect(pathKey(" gvl_io . bStart")).toBe("BSTART");
+    expect(pathKey("GVL.bStart")).toBe("BSTART");
+    expect(pathKey("Main.GVL_IO")).toBe("MAIN.GVL_IO");
+    expect(operandPath("GVL_IO.bStart", "MAIN", [])).toBe("BSTART");
+    setGlobalListNames([]);
+    expect(pathKey("GVL_IO.bStart")).toBe("GVL_IO.BSTART");
   });
 });

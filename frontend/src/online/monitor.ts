@@ -103,13 +103,25 @@ export const emptyMonitor: MonitorState = {
 
 /**
  * A path as the server names it in its messages: upper case, and a global without the `GVL.`
- * prefix a client may write (the server reports `GVL.Start` as `START`), so values are found.
+ * prefix a client may write (the server reports `GVL.Start` as `START`), nor the name of its global
+ * variable list (`GVL_IO.bStart` is `BSTART`: a name is declared by one list only), so values are found.
  */
-export const pathKey = (path: string): string =>
-  path
+export function pathKey(path: string): string {
+  const key = path
     .trim()
     .toUpperCase()
     .replace(/^GVL\s*\.\s*/, "");
+  const list = /^([A-Z_][A-Z0-9_]*)\s*\.\s*/.exec(key);
+  return list && listNames().has(list[1]!) ? key.slice(list[0].length) : key;
+}
+
+let lists = new Set<string>();
+const listNames = () => lists;
+
+/** The names of the open project's global variable lists, for `pathKey` (the shell sets them as they change). */
+export function setGlobalListNames(names: readonly string[]): void {
+  lists = new Set(names.map((name) => name.toUpperCase()));
+}
 
 function appendLog(
   state: MonitorState,
@@ -227,6 +239,7 @@ export function operandPath(operand: string, instance: string, symbols: readonly
   if (!VARIABLE.test(text) || LITERALS.has(text.toUpperCase())) return null;
   const head = text.split(/[.[]/, 1)[0]!.toUpperCase();
   const symbol = symbols.find((s) => s.name.toUpperCase() === head);
-  const global = symbol?.var_class === "VAR_GLOBAL" || symbol?.var_class === "VAR_EXTERNAL";
+  const global =
+    symbol?.var_class === "VAR_GLOBAL" || symbol?.var_class === "VAR_EXTERNAL" || (!symbol && listNames().has(head));
   return pathKey(global ? text : `${instance}.${text}`);
 }

@@ -6,6 +6,7 @@ import { checkUnsaved } from "../api/client";
 import type { CheckReport, Diagnostic } from "../generated/api";
 import type { Project } from "../generated/api";
 import { storedSize, storeSize } from "./layout";
+import { gvlOfDiagnostic, gvlTab } from "./gvls";
 import { partOf } from "./parts";
 
 export type PanelId = "diagnostics" | "watch" | "io" | "log" | "breakpoints" | "trace" | "tests" | "xref";
@@ -63,7 +64,8 @@ export function panelOf(d: Diagnostic): string | null {
 }
 
 export function focusOf(d: Diagnostic): Omit<Focus, "seq"> | null {
-  const projectPart = partOf(d);
+  const list = gvlOfDiagnostic(d);
+  const projectPart = list === null ? partOf(d) : gvlTab(list);
   if (projectPart) return { pou: projectPart, network: null, element: null, line: d.line ?? null, part: null };
   if (!d.pou) return null;
   const part = d.file?.endsWith("/declarations") ? "declarations" : d.file?.endsWith("/body") ? "body" : null;

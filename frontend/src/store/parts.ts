@@ -5,6 +5,7 @@
 // the part's label. A diagnostic of one (file "globals" or "types", or a JSON path into the tasks) reveals
 // that tab.
 import type { Diagnostic } from "../generated/api";
+import { gvlNameOf, isGvlTab } from "./gvls";
 
 export const PART_LABELS = {
   "part:globals": "Global variables",
@@ -24,7 +25,13 @@ export const isProjectPart = (tab: string): tab is ProjectPart => Object.hasOwn(
 /** What the user reads for a tab or unsaved-changes key: a part's label, else the key (a POU's name, a test
  * file's path). */
 export const partLabel = (key: string): string =>
-  isProjectPart(key) ? PART_LABELS[key] : key === EXERCISE_TAB ? "Exercise" : key;
+  isProjectPart(key)
+    ? PART_LABELS[key]
+    : key === EXERCISE_TAB
+      ? "Exercise"
+      : isGvlTab(key)
+        ? `${gvlNameOf(key)} (GVL)`
+        : key;
 
 /** The keys of the parts before they had the `part:` prefix (their labels), as stored sessions and drafts
  * still hold them. */

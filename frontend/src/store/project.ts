@@ -9,6 +9,7 @@ import type { FbdBody, LdBody, Pou, PouAction, Project, SfcBody, Task, TestFile 
 import { historyOf, type History } from "./history";
 import { addDeclaration, type VariableDeclaration } from "./declarations";
 import { isGlobalClass } from "./newVariable";
+import { gvlNameOf, gvlOf, isGvlTab } from "./gvls";
 import { isProjectPart } from "./parts";
 import { loadDraft, removeDraft, saveDraft } from "./drafts";
 
@@ -303,7 +304,7 @@ export function createWorkspaceStore(
 
       openPou(pou) {
         const { tabs, project, histories } = get();
-        if (isProjectPart(pou)) {
+        if (isProjectPart(pou) || (isGvlTab(pou) && gvlOf(project, gvlNameOf(pou)))) {
           set({ active: pou, tabs: tabs.includes(pou) ? tabs : [...tabs, pou] });
           return;
         }

@@ -55,9 +55,12 @@ export function RenameDialog({
   initial,
   onClose,
   onRenamed,
+  tabOf,
 }: {
   current: string;
   isPou: boolean;
+  /** The tab (and unsaved-changes) key of a renamed item that has one and is no POU (a global variable list). */
+  tabOf?(name: string): string;
   /** The function block whose method or property `current` is. */
   member?: string;
   /** The new name to start from (else `current`). */
@@ -74,7 +77,11 @@ export function RenameDialog({
     const project = workspaceStore.getState().project;
     if (!project) return;
     if (preview && result && preview.name === name.trim()) {
-      const renamed: Record<string, string> = isPou ? { [current]: preview.name } : {};
+      const renamed: Record<string, string> = isPou
+        ? { [current]: preview.name }
+        : tabOf
+          ? { [tabOf(current)]: tabOf(preview.name) }
+          : {};
       const changedPous = new Set(preview.changes.map((c) => c.pou).filter((p): p is string => !!p));
       // Breakpoints on the POU (or on the method and its overrides) take the new name before the project changes
       // (else they would be dropped as gone).

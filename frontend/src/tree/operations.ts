@@ -1,9 +1,10 @@
-// How a project item (a POU, a type, a global variable, a task) is deleted or duplicated: the description the
+// How a project item (a POU, a type, a global variable or list, a task) is deleted or duplicated: the description the
 // tree's dialogs (dialogs.tsx) are driven by, and the operations of a POU and of a global variable.
 import type { Pou, Project } from "../generated/api";
 import { copyName } from "../iec/identifier";
 import { onlineStore } from "../online/store";
 import { withoutGlobalIn } from "../store/globals";
+import { gvlTab, withoutGvl } from "../store/gvls";
 import { workspaceStore } from "../store/project";
 import { traceStore } from "../trace/store";
 import { duplicated, globalReferences, referencesTo, sessionUses, type Use } from "./refactor";
@@ -54,10 +55,18 @@ export const pouOperations = (pou: Pou): ItemOperations => ({
   open: (name) => workspaceStore.getState().openPou(name),
 });
 
-/** The operations of a global variable: its uses (every POU, diagram, task, panel, watch and trace path but its
- * own declaration) and the globals without it. */
-export const globalOperations = (name: string): DeleteOperations => ({
-  references: async (project) => [...(await globalReferences(project, name)), ...sessionUsesOf(name)],
-  remove: (project) => withoutGlobalIn(project, name),
-  changed: ["part:globals"],
+/** The operations of a global variable (of the global variable list `list`, or of no list): its uses (every POU,
+ * diagram, task, panel, watch and trace path but its own declaration) and the globals without it. */
+export const globalOperations = (name: string, list: string | null = null): DeleteOperations => ({
+  references: async (project) => [...(await globalReferences(project, name, list)), ...sessionUsesOf(name)],
+  remove: (project) => withoutGlobalIn(project, name, list),
+  changed: [list === null ? "part:globals" : gvlTab(list)],
+});
+
+/** The operations of a global variable list: the uses of its name (``GVL.x``) and the project without it. */
+export const gvlOperations = (list: string): DeleteOperations => ({
+  references: (project) => referencesTo(project, list),
+  remove: (project) => withoutGvl(project, list),
+  changed: [gvlTab(list)],
+  closed: [gvlTab(list)],
 });

@@ -5,7 +5,8 @@ import { http, unwrap } from "../api/client";
 import type { Reference } from "../generated/api";
 import type { Pou, Project } from "../generated/api";
 import { panelChange } from "../hmi/history";
-import { globalLine } from "../store/globals";
+import { globalLine, globalsText } from "../store/globals";
+import { gvlTab } from "../store/gvls";
 import { typeLines } from "../store/types";
 
 /** A use of a name in this browser's session, not in the project: a watch list row, a traced variable or the
@@ -40,9 +41,15 @@ export async function typeReferences(project: Project, name: string): Promise<Re
 }
 
 /** Every place that uses global variable `name`, its own declaration left out (store/globals.ts globalLine). */
-export async function globalReferences(project: Project, name: string): Promise<Reference[]> {
-  const own = globalLine(project.globals ?? "", name);
-  return (await referencesTo(project, name)).filter((r) => !(r.part === "globals" && r.line === own));
+export async function globalReferences(
+  project: Project,
+  name: string,
+  list: string | null = null,
+): Promise<Reference[]> {
+  const own = globalLine(globalsText(project, list), name);
+  const declaration = (r: Reference) =>
+    r.line === own && (list === null ? r.part === "globals" : r.part === "gvl" && r.file === `gvls/${list}`);
+  return (await referencesTo(project, name)).filter((r) => !declaration(r));
 }
 
 /** The watch list rows, traced variables and trace trigger whose path starts with `name` (a global or a program). */
@@ -87,6 +94,7 @@ export function describeReference(use: Use): string {
   if (r.part === "task") return `task ${r.task}`;
   if (r.part === "test") return `${r.file} line ${r.line}`;
   if (r.part === "globals") return `Global variables line ${r.line}`;
+  if (r.part === "gvl") return `${r.file?.slice("gvls/".length)} line ${r.line}`;
   if (r.part === "types") return `Types line ${r.line}`;
   if (r.part === "step") return `${r.pou}, a step's action ${r.text}`;
   if (r.part === "network") {
@@ -125,6 +133,7 @@ export function changedParts(changes: readonly Reference[]): string[] {
   const parts = new Set<string>();
   for (const c of changes) {
     if (c.part === "globals") parts.add("part:globals");
+    else if (c.part === "gvl" && c.file) parts.add(gvlTab(c.file.slice("gvls/".length)));
     else if (c.part === "types") parts.add("part:types");
     else if (c.part === "task") parts.add("part:tasks");
     else if (c.part === "test" && c.file) parts.add(c.file);

@@ -70,6 +70,7 @@ describe("cross references", () => {
     });
     const declared = { kind: "declared" as const, pou: null, line: 2, path: "Start" };
     expect(placeOf(declared)).toBe("globals, declarations line 2");
+    expect(placeOf({ ...declared, gvl: "GVL_IO" })).toBe("GVL_IO, declarations line 2"); // a global variable list's
     expect(placeToReveal(declared)).toBeNull();
     expect(placeToReveal({ ...declared, pou: "Main" })).toMatchObject({ line: 2, file: "Main/declarations" });
   });

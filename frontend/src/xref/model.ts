@@ -42,7 +42,7 @@ export function filterEntries(entries: readonly XrefEntry[], filter: string): Xr
 
 /** Where an access is: "Main, network 3 (StartCounter)", "Blinker, line 8", "Main, declarations line 2". */
 export function placeOf(a: XrefAccess): string {
-  const where = a.pou ?? "globals";
+  const where = a.pou ?? a.gvl ?? "globals";
   if (a.kind === "declared") return `${where}, declarations line ${a.line ?? "?"}`;
   if (a.network_number != null) return `${where}, network ${a.network_number}${a.operand ? ` (${a.operand})` : ""}`;
   if (a.line != null) return `${where}, line ${a.line}`;

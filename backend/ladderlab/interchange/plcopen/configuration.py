@@ -11,6 +11,12 @@ Another tool's document reads with the elements only; CODESYS's with its GVLs th
 A project's own tasks (no configuration) are written as configuration ``config`` with resource
 ``resource`` whose instances are named after their programs; a document whose configuration runs nothing
 and holds only globals reads back as the project's globals.
+
+Named global variable lists (``Project.gvls``) are written as CODESYS writes a GVL, in the (first) resource: one
+``<globalVars name>`` holding every variable under its first block's qualifiers, its blocks in a
+``mixedattrsvarlist`` entry when they are several, ``{attribute 'qualified_only'}`` in its ``attributes`` entry.
+A ``<globalVars>`` with a name, in a configuration or a resource, reads back as a list of that name. A resource
+written only to hold the lists (a project without tasks) is marked ``lists`` and reads back as none.
 """
 
 from __future__ import annotations
@@ -22,9 +28,10 @@ from collections.abc import Callable
 from decimal import Decimal
 
 from ...model.diagnostics import Diagnostic
-from ...model.project import Configuration, ProgramInstance, Project, Resource, Task
+from ...model.project import Configuration, GlobalVariableList, ProgramInstance, Project, Resource, Task
 from ...st import ast
 from ...st.parser import parse_declarations
+from .vars import ATTRIBUTES_DATA
 from .xml_io import Reader, data_entries, info, info_text, ladderlab_data, sub
 
 CONFIGURATION = "config"
@@ -32,8 +39,11 @@ RESOURCE = "resource"
 MIXED_DATA = "http://www.3s-software.com/plcopenxml/mixedattrsvarlist"
 _DURATION = re.compile(r"P(?:(\d+)D)?(?:T(?:(\d+)H)?(?:(\d+)M)?(?:(\d+(?:\.\d+)?)S)?)?")
 
+QUALIFIED_ONLY = "qualified_only"
+
 VarBlocks = Callable[[str, str], list[ast.VarBlock]]  # (text, file) -> parsed VAR blocks
 WriteList = Callable[[ET.Element, ast.VarBlock], ET.Element]
+ReadList = Callable[[list[ET.Element], str | None], str]  # (<globalVars> elements, carried text) -> VAR_GLOBAL text
 
 
 # ---------------------------------------------------------------- export
@@ -46,10 +56,11 @@ def write_instances(
     configurations = sub(parent, "configurations")
     globals_ = var_blocks(project.globals, "globals.st")
     config = project.configuration
+    lists_only = config is None and not project.tasks and bool(project.gvls)  # a resource only to hold the lists
     if config is None:
-        if not globals_ and not project.tasks:
+        if not globals_ and not project.tasks and not project.gvls:
             return
-        resources = [Resource(name=RESOURCE, tasks=project.tasks)] if project.tasks else []
+        resources = [Resource(name=RESOURCE, tasks=project.tasks)] if project.tasks or project.gvls else []
         config = Configuration(name=CONFIGURATION, resources=resources)
     node = sub(configurations, "configuration", {"name": config.name})
     for r, resource in enumerate(config.resources):
@@ -57,13 +68,18 @@ def write_instances(
         for t, task in enumerate(resource.tasks):  # TC6's order: tasks, globalVars, pouInstances
             where = f"$.configuration.resources[{r}].tasks[{t}]" if project.configuration else f"$.tasks[{t}]"
             _task(holder, task, where, problems)
+        if r == 0:
+            _write_gvls(holder, project, var_blocks, write_list)
         for block in var_blocks(resource.globals, f"configuration/{resource.name}/globals"):
             write_list(holder, block)
         for program in resource.programs:
             _instance(holder, program)
-        if resource.name is None or resource.on is not None or resource.globals:
+        if resource.name is None or resource.on is not None or resource.globals or lists_only:
             texts = {"globals": resource.globals} if resource.globals else None
-            ladderlab_data(holder, {"unnamed": resource.name is None or None, "on": resource.on}, texts)
+            attributes = {"unnamed": resource.name is None or None, "on": resource.on, "lists": lists_only or None}
+            ladderlab_data(holder, attributes, texts)
+    if not config.resources:
+        _write_gvls(node, project, var_blocks, write_list)
     for block in globals_ + var_blocks(config.globals, "configuration/globals"):
         write_list(node, block)
     if project.configuration is not None:
@@ -71,6 +87,24 @@ def write_instances(
         ladderlab_data(node, None, {name: text for name, text in texts.items() if text})
     elif project.tasks:
         ladderlab_data(node, {"tasks": True})  # the project's own tasks: they read back as tasks
+
+
+def _write_gvls(holder: ET.Element, project: Project, var_blocks: VarBlocks, write_list: WriteList) -> None:
+    """Each GVL as CODESYS writes it (module docstring), its text carried as typed in LadderLab's addData."""
+    for gvl in project.gvls:
+        blocks = var_blocks(gvl.text, f"gvls/{gvl.name}.st")
+        first = blocks[0].qualifiers if blocks else []
+        node = write_list(holder, ast.VarBlock("VAR_GLOBAL", first, [d for b in blocks for d in b.decls]))
+        node.set("name", gvl.name)
+        add = ladderlab_data(node, None, {"text": gvl.text} if gvl.text else None)
+        if gvl.qualified_only:
+            data = sub(add, "data", {"name": ATTRIBUTES_DATA, "handleUnknown": "implementation"})
+            sub(sub(data, "Attributes"), "Attribute", {"Name": QUALIFIED_ONLY, "Value": ""})
+        if len(blocks) > 1:
+            data = sub(add, "data", {"name": MIXED_DATA, "handleUnknown": "implementation"})
+            mixed = sub(data, "MixedAttrsVarList")
+            for block in blocks:
+                write_list(mixed, block).set("name", gvl.name)
 
 
 def _task(resource: ET.Element, task: Task, where: str, problems: list[Diagnostic]) -> None:
@@ -98,12 +132,34 @@ def _instance(parent: ET.Element, instance: ProgramInstance) -> None:
 # ---------------------------------------------------------------- import
 
 
+def read_gvls(reader: Reader, configurations: list[ET.Element], read_list: ReadList) -> list[GlobalVariableList]:
+    """The named lists of ``<configuration>`` elements and their resources, in document order."""
+    holders = [h for c in configurations for h in [c, *reader.children(c, "resource")]]
+    return [
+        _read_gvl(reader, node, read_list)
+        for h in holders
+        for node in reader.children(h, "globalVars")
+        if node.get("name")
+    ]
+
+
+def _read_gvl(reader: Reader, node: ET.Element, read_list: ReadList) -> GlobalVariableList:
+    attributes = [
+        attribute.get("Name")
+        for data in data_entries(node, reader, ATTRIBUTES_DATA)
+        for holder in reader.children(data, "Attributes")
+        for attribute in reader.children(holder, "Attribute")
+    ]
+    text = read_list(_blocks(reader, node), info_text(info(node, reader), "text"))
+    return GlobalVariableList(name=node.get("name", ""), qualified_only=QUALIFIED_ONLY in attributes, text=text)
+
+
 def read_instances(
-    reader: Reader, configurations: list[ET.Element], read_list: Callable[[list[ET.Element], str | None], str]
+    reader: Reader, configurations: list[ET.Element], read_list: ReadList
 ) -> tuple[str, Configuration | None, list[Task]]:
     """(the project's globals text, its configuration, its own tasks) from ``<configuration>`` elements;
     ``read_list(lists, carried)`` turns ``<globalVars>`` elements into a VAR_GLOBAL text (the carried text
-    when it still says the same)."""
+    when it still says the same). Named lists are GVLs (``read_gvls``), not part of these."""
     if len(configurations) > 1:
         reader.report(
             "PLCOPEN-CONFIG",
@@ -117,7 +173,9 @@ def read_instances(
         return read_list(lists, None), None, []
     node = configurations[0]
     ours = info(node, reader)
-    resources = [_resource(reader, r, read_list) for r in reader.children(node, "resource")]
+    resources = [
+        _resource(reader, r, read_list) for r in reader.children(node, "resource") if not _lists_only(reader, r)
+    ]
     carried = info_text(ours, "globals")
     globals_ = read_list(lists, None)
     if not resources and not carried:  # a configuration that only holds globals: the project's globals
@@ -150,7 +208,13 @@ def _short(program: str | ProgramInstance) -> str | ProgramInstance:
     return program
 
 
-def _resource(reader: Reader, node: ET.Element, read_list: Callable[[list[ET.Element], str | None], str]) -> Resource:
+def _lists_only(reader: Reader, node: ET.Element) -> bool:
+    """A resource LadderLab wrote only to hold a project's GVLs."""
+    ours = info(node, reader)
+    return ours is not None and ours.get("lists") == "true"
+
+
+def _resource(reader: Reader, node: ET.Element, read_list: ReadList) -> Resource:
     ours = info(node, reader)
     unnamed = ours is not None and ours.get("unnamed") == "true"
     return Resource(
@@ -163,19 +227,27 @@ def _resource(reader: Reader, node: ET.Element, read_list: Callable[[list[ET.Ele
 
 
 def global_lists(reader: Reader, holder: ET.Element) -> list[ET.Element]:
-    """The ``<globalVars>`` of a configuration or resource. CODESYS writes a GVL that mixes qualifiers (VAR_GLOBAL
-    CONSTANT and VAR_GLOBAL) as one list with the first block's qualifiers for every variable, and the blocks as
-    they are in its ``.../plcopenxml/mixedattrsvarlist`` entry: those blocks are the GVL."""
-    found = []
-    for node in reader.children(holder, "globalVars"):
-        split = [
-            block
-            for data in data_entries(node, reader, MIXED_DATA)
-            for mixed in reader.children(data, "MixedAttrsVarList")
-            for block in reader.children(mixed, "globalVars")
-        ]
-        found += split or [node]
-    return found
+    """The unnamed ``<globalVars>`` of a configuration or resource (named ones are GVLs, ``read_gvls``), each as its
+    blocks (``_blocks``)."""
+    return [
+        block
+        for node in reader.children(holder, "globalVars")
+        if not node.get("name")
+        for block in _blocks(reader, node)
+    ]
+
+
+def _blocks(reader: Reader, node: ET.Element) -> list[ET.Element]:
+    """A ``<globalVars>`` as its VAR_GLOBAL blocks. CODESYS writes a GVL that mixes qualifiers (VAR_GLOBAL CONSTANT
+    and VAR_GLOBAL) as one list with the first block's qualifiers for every variable, and the blocks as they are in
+    its ``.../plcopenxml/mixedattrsvarlist`` entry: those blocks are the GVL."""
+    split = [
+        block
+        for data in data_entries(node, reader, MIXED_DATA)
+        for mixed in reader.children(data, "MixedAttrsVarList")
+        for block in reader.children(mixed, "globalVars")
+    ]
+    return split or [node]
 
 
 def _duration(text: str) -> str:

@@ -42,7 +42,7 @@ from .body import (
     read_network_list,
 )
 from .codesys_cfc import CALLTYPE_DATA, ELEMENTTYPE_DATA, CodesysChart, chart_element
-from .configuration import MIXED_DATA, read_instances
+from .configuration import MIXED_DATA, QUALIFIED_ONLY, read_gvls, read_instances
 from .exporter import diagram_writer
 from .fbd_import import FbdImporter, fbd_groups, place_comments
 from .graph import read_graph, resolve_continuations
@@ -89,6 +89,8 @@ _HEADER = re.compile(r"^(PROGRAM|FUNCTION_BLOCK|FUNCTION)\s", re.IGNORECASE)
 BACHMANN = "www.bachmann.at/plc/plcopenxml"
 POU_DATA = "http://www.3s-software.com/plcopenxml/pou"
 DATATYPE_DATA = "http://www.3s-software.com/plcopenxml/datatype"
+#: The CODESYS attribute LadderLab reads from an element's attributes entry, by the element's tag
+_READ_ATTRIBUTE = {"dataType": "pack_mode", "globalVars": QUALIFIED_ONLY}
 _UNDERSTOOD = {
     (INPUTASSIGNMENTS_DATA, "InputAssignments"),  # an instance's FB_init arguments, read with it (instance_args.py)
     (CFC_DATA, "CFC"),  # a POU's chart (codesys_cfc.py); a method's, action's or transition's is reported
@@ -195,6 +197,7 @@ class _Importer:
         carried = info_text(ours, "globals")
         read_list = lambda lists, own: self.globals(lists, own if own is not None else carried)  # noqa: E731
         globals_, configuration, tasks = read_instances(r, configurations, read_list)
+        gvls = read_gvls(r, configurations, self.globals)
         for data_name, count in sorted(self.foreign.items()):
             r.report(
                 "PLCOPEN-ADDDATA",
@@ -209,6 +212,7 @@ class _Importer:
             name=name,
             types=types,
             globals=globals_,
+            gvls=gvls,
             pous=[p for p in pous if p is not None],
             tasks=tasks,
             configuration=configuration,
@@ -264,16 +268,16 @@ class _Importer:
     def note_foreign(self, entries: list[ET.Element], holder: str) -> None:
         for data in entries:
             kinds = {(data.get("name", ""), local(c)) for c in data if isinstance(c.tag, str)}
-            if holder == "dataType" and self.only_pack_mode(data):
-                continue  # a STRUCT's pack_mode, read with its data type (vars.py)
+            if self.only_attribute(data, _READ_ATTRIBUTE.get(holder)):
+                continue  # a STRUCT's pack_mode, read with its data type (vars.py); a GVL's qualified_only
             if not kinds or not kinds <= _UNDERSTOOD:
                 self.foreign[data.get("name", "")] += 1
 
-    def only_pack_mode(self, data: ET.Element) -> bool:
-        """Whether a CODESYS attributes entry holds pack_mode alone."""
+    def only_attribute(self, data: ET.Element, name: str | None) -> bool:
+        """Whether a CODESYS attributes entry holds the attribute ``name`` alone."""
         r = self.reader
         names = {a.get("Name") for holder in r.children(data, "Attributes") for a in r.children(holder, "Attribute")}
-        return data.get("name") == ATTRIBUTES_DATA and names == {"pack_mode"}
+        return name is not None and data.get("name") == ATTRIBUTES_DATA and names == {name}
 
     def collect_foreign(self, root: ET.Element) -> None:
         """Count other tools' addData entries anywhere in the document (those not understood are reported)."""

@@ -1,4 +1,5 @@
-"""A whole project as one IEC ST file: TYPEs, VAR_GLOBAL, every POU, and the configuration.
+"""A whole project as one IEC ST file: TYPEs, VAR_GLOBAL, the named global variable lists (st/gvl_text.py), every
+POU, and the configuration.
 
 The types and globals texts are kept as typed; ST POUs as their text, LD/FBD
 POUs as their ST export (st_export). A project's configuration is written as it
@@ -19,6 +20,7 @@ import textwrap
 from ...ir.lower_configuration import DEFAULT_INTERVAL_MS, DEFAULT_TASK
 from ...model import Configuration, Diagnostic, ProgramInstance, Project, Resource, Task, has_errors
 from ...st.checker import check_project
+from ...st.gvl_text import gvl_source
 from ...st.printer import INDENT
 from ...st.project_text import source_to_project
 from ...st.types import typing_rules
@@ -45,6 +47,7 @@ def export_project_st(project: Project, *, sfc_text: bool = False) -> StExport:
         parts.append(project.types.strip("\n"))
     if project.globals.strip():
         parts.append(project.globals.strip("\n"))
+    parts += [gvl_source(gvl) for gvl in project.gvls]  # after the unnamed globals: st/gvl_text.py
     for pou in project.pous:
         if pou.language == "st":
             parts.append(compose_pou_text(pou).rstrip("\n"))
