@@ -108,13 +108,14 @@ class Scope:
                 return names.slot(slot.name), slot.type, 0
             key = names.escape(slot.name)
             return f"ll_c_{key}[ll_k_{key}]", slot.type, 0
+        upper = slot.name.upper()
         if self.function:
             attr = names.slot(slot.name)
-            return (f"{attr}[0]" if slot.name.upper() in self.boxed else attr), slot.type, 0
-        local = self.temp_locals.get(slot.name.upper())
+            return (f"{attr}[0]" if upper in self.boxed else attr), slot.type, 0
+        local = self.temp_locals.get(upper)
         if local is not None:
             return local, slot.type, 0
-        place = self._place(var.name)
+        place = self.layout.places[upper]  # type: ignore[union-attr]  # (by the name found: once per variable)
         return f"{_page_owner(place.page)}.{place.attr}", slot.type, place.page
 
     def slot_source(self, name: str) -> str:
@@ -176,14 +177,14 @@ def framed_variables(module: ModuleContext, pou: ir.Pou) -> set[str]:
     and, when some POU takes REF()/ADR() of its VAR_IN_OUT, those passed to an in-out (the reference the callee
     takes refers to them). Empty for the many POUs that do neither: their code has no frame."""
     found = module.mentions(pou)
-    if pou.kind == "function":
-        own, kept = addressed_locals(found), None
-    else:
-        own, kept = addressed_temps(found), {s.name.upper() for s in pou.slots if s.var_class == "VAR_TEMP"}
+    function = pou.kind == "function"
+    own = addressed_locals(found) if function else addressed_temps(found)
     if not module.in_outs_addressed:
         return own
     passed = passed_in_out(found, lambda fb, pin: _in_out_pin(module, fb, pin))
-    return own | (passed if kept is None else passed & kept)
+    if not function:  # (the set of a large POU's VAR_TEMP names made only here)
+        passed &= {s.name.upper() for s in pou.slots if s.var_class == "VAR_TEMP"}
+    return own | passed
 
 
 def _in_out_pin(module: ModuleContext, fb: str, pin: str) -> bool:
