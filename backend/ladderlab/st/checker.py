@@ -430,6 +430,7 @@ class ProjectChecker:
         self, block: ast.VarBlock, table: dict[str, Symbol], checker: BodyChecker, pou: PouInfo | None
     ) -> None:
         report = checker.report
+        constant, retain, owner = block.constant, block.retain, pou.name if pou else None  # (once, not per name)
         for decl in block.decls:
             ty = self.resolve(decl.type, checker)
             self._check_decl(block, decl, ty, pou, report)
@@ -453,12 +454,12 @@ class ProjectChecker:
                     decl.type,
                     init,
                     name.address,
-                    block.constant,
-                    block.retain,
+                    constant,
+                    retain,
                     decl.edge,
                     decl.comment,
                     name.span,
-                    pou.name if pou else None,
+                    owner,
                 )
                 table[key] = symbol
                 if block.kind == "VAR_EXTERNAL" and pou is not None:
