@@ -24,6 +24,7 @@ from . import names
 from .context import CodegenError, ModuleContext, std_fb_class
 from .layout import Layout, Place
 from .mentions import addressed_locals, addressed_temps, passed_in_out, referenced_locals
+from .templates import BlockTemplates
 from .typeinfo import is_composite
 
 
@@ -53,6 +54,8 @@ class Scope:
         #: upper-case slot name -> the local it lives in (fast variant; ``temp_locals``)
         self.temp_locals: dict[str, str] = {} if self.function else temp_locals(module, pou)
         self.temps_used: set[str] = set()  # of ``temp_locals``, by the chunk being generated
+        #: the fast variant's network shapes (templates.py), when its body is a diagram's
+        self.templates = BlockTemplates() if not (module.debug or module.probes or self.function) else None
 
     def temp(self, prefix: str) -> str:
         self._temps += 1
@@ -81,16 +84,21 @@ class Scope:
 
     def root(self, var: ir.Var) -> tuple[str, t.IrType]:
         """Source reading (and assignable as) the root slot of ``var``, and the slot's type."""
-        key = (var.scope, var.name)
-        found = self._roots.get(key)
-        if found is None:
-            found = self._roots[key] = self._root(var)
-        code, ty, page = found
+        code, ty, page = self.placed(var)
         if page:  # every chunk function loads the pages its own statements use
             self.pages_used.add(page)
         elif code.startswith("ll_t_"):  # ... and the temporaries they use (only temp_locals' are named so)
             self.temps_used.add(var.name.upper())
         return code, ty
+
+    def placed(self, var: ir.Var) -> tuple[str, t.IrType, int]:
+        """``root``'s source and type, and the page its slot lives on, without noting the page or temporary as
+        used by the chunk being generated."""
+        key = (var.scope, var.name)
+        found = self._roots.get(key)
+        if found is None:
+            found = self._roots[key] = self._root(var)
+        return found
 
     def _root(self, var: ir.Var) -> tuple[str, t.IrType, int]:
         """``root``'s source and type, and the page its slot lives on (0: ``self``, a local or a global)."""

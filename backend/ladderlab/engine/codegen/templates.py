@@ -1,0 +1,227 @@
+"""A network's fast-variant code filled in from the code of an earlier network of the same shape (issue 27).
+
+A large LD/FBD body repeats a few network shapes with other variables: ``--| A1 |--|/ B1 |--( C1 )--`` and
+``--| A2 |--|/ B2 |--( C2 )--`` differ in nothing but the slots they name. ``BlockTemplates`` emits the first
+network of a shape as ``Statements`` does and keeps its lines with each variable's code (``self.v_A1``) as a
+hole; a later network of that shape gets those lines with its own variables' codes (``self.v_A2``), its
+statements' origins registered in the same order and its lines tagged as the first network's were.
+
+The shape (``_Shape``) is everything the emitted text may depend on: each statement and expression node with all
+its fields (types, constants, operators, pins, FB types, paths), which stores liveness.py drops or folds, the
+indentation, and for each variable the form of its code (the object it is read through: ``self``, a page, the
+globals) and which variables are the same (``x AND x``, a read forwarded from the local just stored). Only the
+variables' names are left out. A network is emitted as usual, and its shape never reused, when anything else
+could differ: a variable reached otherwise than as ``owner.v_NAME`` (an in-out, a located variable, an escaped
+name), a name of one of its variables left in the text outside its code (a message naming it), a statement this
+module does not model (loops, jumps, returns), or a side effect of the emission besides the origins and the
+pages and temporaries used (a diagnostic, a bound constant, a numbered temporary, an outlined body). Only the
+fast variant, which records no probe, is filled in (tests/engine/test_block_templates.py compares the module,
+its line origins and its origins with those of the plain emission).
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
+
+from ...ir import nodes as ir
+from ...ir.nodes import node_fields
+
+if TYPE_CHECKING:
+    from .statements import Statements
+
+#: The code of a variable whose shape may be reused: an attribute of ``self``, of a page or of the globals
+_CODE = re.compile(r"(?:self|ll_p\d+|G\d*)\.v_[A-Z0-9_]+\Z")
+_PROBE = ("probe",)
+_DEAD = ("dead",)
+
+
+class _Unshaped(Exception):
+    """The block has something a template does not model: it is emitted as usual."""
+
+
+@dataclass(slots=True)
+class _Template:
+    lines: list[tuple[str | int, ...]]  # literal parts and the indices of the block's variables' codes
+    origins: list[int]  # per line: the index (in ``statements``) of the statement it comes from, -1: the block's
+    statements: list[int]  # the walk positions of the statements that registered an origin, in order
+    temps: frozenset[str]  # the temporaries' locals and the pages the block's code uses
+    pages: frozenset[int]
+
+
+class BlockTemplates:
+    """The templates of one POU's network shapes (one per generated POU: its scope fixes the codes' forms)."""
+
+    def __init__(self) -> None:
+        self._found: dict[tuple, _Template | None] = {}  # None: a shape that is emitted as usual
+        self._forms: dict[str, Any] = {}  # a variable's code -> its form (``_form``)
+
+    def emit(self, st: Statements, block: ir.Block, own_group: bool) -> None:
+        """``st.statements(block.statements, own_group)``, from the block's template where there is one."""
+        shape = _Shape(st, self._forms)
+        try:
+            key = (st.src.depth, st.blocks, own_group, shape.statements(block.statements))
+            template = self._found.get(key, _Template)
+        except (_Unshaped, TypeError):  # (TypeError: an unhashable field)
+            st.statements(block.statements, own_group=own_group)
+            return
+        if template is _Template:  # a new shape: emit it and learn it
+            self._found[key] = _learn(st, block, own_group, shape)
+        elif template is None:
+            st.statements(block.statements, own_group=own_group)
+        else:
+            _fill(st, template, shape)  # type: ignore[arg-type]
+
+
+def _learn(st: Statements, block: ir.Block, own_group: bool, shape: _Shape) -> _Template | None:
+    """Emit the block as usual; its template, or None when something besides its text and origins changed."""
+    src, module, scope = st.src, st.module, st.scope
+    lines, origins, outer = len(src.lines), len(module.origins), src.origin
+    counts = (len(module.diagnostics), len(module.bound), scope._temps, len(st.outlines.lines))
+    temps, pages = scope.temps_used, scope.pages_used
+    scope.temps_used, scope.pages_used = set(), set()
+    try:
+        st.statements(block.statements, own_group=own_group)
+    finally:
+        used_temps, used_pages = scope.temps_used, scope.pages_used
+        temps |= used_temps
+        pages |= used_pages
+        scope.temps_used, scope.pages_used = temps, pages
+    st._output_line = None  # (a network's first line is its comment: nothing chains onto its last line)
+    if counts != (len(module.diagnostics), len(module.bound), scope._temps, len(st.outlines.lines)):
+        return None
+    position = {id(s): i for i, s in enumerate(shape.walked)}
+    statements = []
+    for s, origin in zip(module.origin_statements[origins:], module.origins[origins:]):
+        found = position.get(id(s))
+        if found is None or origin is not shape.walked[found].origin:
+            return None
+        statements.append(found)
+    line_origins = []
+    for oid in src.line_origins[lines:]:
+        if oid is not None and oid >= origins:
+            line_origins.append(oid - origins)
+        elif oid == outer:
+            line_origins.append(-1)
+        else:
+            return None
+    template = _holes(src.lines[lines:], shape)
+    if template is None:
+        return None
+    return _Template(template, line_origins, statements, frozenset(used_temps), frozenset(used_pages))
+
+
+def _holes(lines: list[str], shape: _Shape) -> list[tuple[str | int, ...]] | None:
+    """``lines`` with each variable's code a hole (its index), or None when a variable's name is left elsewhere."""
+    if not shape.codes:
+        return [(line,) for line in lines]
+    codes = sorted(shape.codes, key=len, reverse=True)
+    holes = re.compile(r"(?<![\w.])(" + "|".join(re.escape(code) for code in codes) + r")(?!\w)")
+    found = {part for code in codes for part in (code.partition(".v_")[2], code.partition(".")[2])}
+    names = re.compile(  # the variables' IEC names (upper case: ``_CODE``) and attributes
+        r"(?<![A-Za-z0-9])(" + "|".join(re.escape(name) for name in found) + r")(?![A-Za-z0-9])", re.IGNORECASE
+    )
+    template = []
+    for line in lines:
+        parts: list[str | int] = holes.split(line)
+        for i in range(1, len(parts), 2):
+            parts[i] = shape.codes[parts[i]]  # type: ignore[index]
+        if any(names.search(part) for part in parts[::2]):  # type: ignore[arg-type]
+            return None
+        template.append(tuple(parts))
+    return template
+
+
+def _fill(st: Statements, template: _Template, shape: _Shape) -> None:
+    """The template's lines with this block's variables, its statements' origins registered in order."""
+    src, module, scope = st.src, st.module, st.scope
+    codes = list(shape.codes)
+    outer = src.origin
+    for parts in template.lines:
+        src.lines.append("".join(part if type(part) is str else codes[part] for part in parts))  # type: ignore[index]
+    walked = shape.walked
+    oids = [module.origin(walked[i].origin, walked[i]) for i in template.statements]
+    src.line_origins.extend(outer if k < 0 else oids[k] for k in template.origins)
+    scope.temps_used |= template.temps
+    scope.pages_used |= template.pages
+    st._output_line = None
+
+
+class _Shape:
+    """A block's shape (``statements``), the codes of its variables by first appearance, and its statements in
+    ``mentions.walk``'s order. Types and members stand in it by identity (``id``: the IR is alive meanwhile): an
+    equal type that is another object only makes another shape."""
+
+    def __init__(self, st: Statements, forms: dict[str, Any]) -> None:
+        self.place = st.scope.placed
+        self.dead, self.folds = st.dead, st.folds
+        self.forms = forms
+        self.codes: dict[str, int] = {}
+        self.walked: list[ir.Stmt] = []
+
+    def statements(self, statements: list[ir.Stmt]) -> tuple:
+        return tuple([self.statement(s) for s in statements])
+
+    def statement(self, s: Any) -> tuple:
+        self.walked.append(s)
+        kind = type(s)
+        if kind is ir.Probe:  # (the fast variant records none)
+            return _PROBE
+        if kind is ir.Assign:
+            if id(s) in self.dead:  # left out (liveness.py): its variables are not read
+                return _DEAD
+            return (self.folds.get(id(s)), self.var(s.target), self.value(s.value))
+        if kind is ir.If:
+            branches = tuple([(self.value(cond), self.statements(body)) for cond, body in s.branches])
+            return (kind, branches, self.statements(s.orelse))
+        if kind is ir.FbCall or kind is ir.FnCall:
+            fields = node_fields(s)
+            del fields["origin"]
+            return (kind, id(s) in self.dead, *[self.value(v) for v in fields.values()])
+        raise _Unshaped
+
+    def value(self, value: Any) -> Any:
+        kind = type(value)
+        if kind is ir.Var:
+            return self.var(value)
+        if kind is ir.Binary:
+            return (value.op, self.value(value.left), self.value(value.right), id(value.type))
+        if kind is ir.Unary:
+            return (kind, value.op, self.value(value.operand), id(value.type))
+        if kind is ir.Const:
+            return (kind, self.value(value.value), id(value.type))
+        if kind is str or value is None:
+            return value
+        if kind is int or kind is bool or kind is float:
+            return (kind, value)  # (1, 1.0 and True are equal keys, not equal code)
+        if kind is tuple or kind is list:
+            return tuple([self.value(v) for v in value])
+        if kind is ir.Member or kind is ir.Deref:
+            return value
+        if kind is ir.Origin:
+            raise _Unshaped
+        if kind.__module__ == ir.__name__:  # another expression, or an index
+            return (kind, *[self.value(v) for v in node_fields(value).values()])
+        return id(value)  # a type
+
+    def var(self, var: ir.Var) -> tuple:
+        code, ty, _ = self.place(var)
+        form = self.forms.get(code)
+        if form is None:
+            form = self.forms[code] = _form(code)
+        if form is True:  # a temporary's local: the same in every network
+            held: Any = code
+        else:
+            held = (form, self.codes.setdefault(code, len(self.codes)))
+        return (id(var.type), self.value(var.path) if var.path else (), id(ty), held)
+
+
+def _form(code: str) -> Any:
+    """How a variable's code stands in a shape: True for a temporary's local (itself), else the object it is read
+    through (``self``, ``ll_p2``, ``G``); ``_Unshaped`` for any other code."""
+    if code.startswith("ll_t_"):
+        return True
+    if _CODE.match(code):
+        return code.partition(".")[0]
+    raise _Unshaped
