@@ -32,7 +32,7 @@ if TYPE_CHECKING:
     from .statements import Statements
 
 #: The code of a variable whose shape may be reused: an attribute of ``self``, of a page or of the globals
-_CODE = re.compile(r"(?:self|ll_p\d+|G\d*)\.v_[A-Z0-9_]+\Z")
+_CODE = re.compile(r"(self|ll_p\d+|G\d*)\.v_[A-Z0-9_]+\Z")
 _PROBE = ("probe",)
 _DEAD = ("dead",)
 
@@ -55,11 +55,10 @@ class BlockTemplates:
 
     def __init__(self) -> None:
         self._found: dict[tuple, _Template | None] = {}  # None: a shape that is emitted as usual
-        self._forms: dict[str, Any] = {}  # a variable's code -> its form (``_form``)
 
     def emit(self, st: Statements, block: ir.Block, own_group: bool) -> None:
         """``st.statements(block.statements, own_group)``, from the block's template where there is one."""
-        shape = _Shape(st, self._forms)
+        shape = _Shape(st)
         try:
             key = (st.src.depth, st.blocks, own_group, shape.statements(block.statements))
             template = self._found.get(key, _Template)
@@ -153,10 +152,9 @@ class _Shape:
     ``mentions.walk``'s order. Types and members stand in it by identity (``id``: the IR is alive meanwhile): an
     equal type that is another object only makes another shape."""
 
-    def __init__(self, st: Statements, forms: dict[str, Any]) -> None:
+    def __init__(self, st: Statements) -> None:
         self.place = st.scope.placed
         self.dead, self.folds = st.dead, st.folds
-        self.forms = forms
         self.codes: dict[str, int] = {}
         self.walked: list[ir.Stmt] = []
 
@@ -207,21 +205,11 @@ class _Shape:
 
     def var(self, var: ir.Var) -> tuple:
         code, ty, _ = self.place(var)
-        form = self.forms.get(code)
-        if form is None:
-            form = self.forms[code] = _form(code)
-        if form is True:  # a temporary's local: the same in every network
+        if code.startswith("ll_t_"):  # a temporary's local: the same in every network
             held: Any = code
         else:
-            held = (form, self.codes.setdefault(code, len(self.codes)))
+            match = _CODE.match(code)
+            if match is None:
+                raise _Unshaped
+            held = (match.group(1), self.codes.setdefault(code, len(self.codes)))  # (the object read through)
         return (id(var.type), self.value(var.path) if var.path else (), id(ty), held)
-
-
-def _form(code: str) -> Any:
-    """How a variable's code stands in a shape: True for a temporary's local (itself), else the object it is read
-    through (``self``, ``ll_p2``, ``G``); ``_Unshaped`` for any other code."""
-    if code.startswith("ll_t_"):
-        return True
-    if _CODE.match(code):
-        return code.partition(".")[0]
-    raise _Unshaped
