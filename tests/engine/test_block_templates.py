@@ -8,6 +8,7 @@ on a page of their own (``ll_p1.v_X``); the plain emission is what ``Statements`
 
 from __future__ import annotations
 
+import dataclasses
 import os
 
 import pytest
@@ -17,6 +18,7 @@ from hypothesis import strategies as st
 
 from ladderlab.engine.codegen import generate, templates
 from ladderlab.engine.codegen.layout import PAGE_SIZE
+from ladderlab.ir import nodes as ir
 from ladderlab.ir.lower_project import lower_project
 from ladderlab.model import ld
 from ladderlab.model.project import Pou, Project, Task
@@ -112,3 +114,20 @@ def test_the_monitor_and_debug_variants_have_no_templates(monkeypatch: pytest.Mo
     generate(lowered.program, "monitor")
     generate(lowered.program, "debug")
     assert calls == []
+
+
+def test_the_shape_models_every_field_of_the_statements_it_fills() -> None:
+    """templates._Shape lists the fields of these statements one by one: a field added to one of them must be added
+    to its shape (or two networks differing in it would share code)."""
+    modelled = {
+        ir.Assign: ["target", "value", "origin"],
+        ir.If: ["branches", "orelse", "origin"],
+        ir.FbCall: ["instance", "inputs", "outputs", "origin", "en", "eno", "body"],
+        ir.FnCall: ["call", "target", "origin", "en", "eno"],
+        ir.Probe: ["element", "value", "origin", "kind"],  # (none recorded in the fast variant)
+        ir.Var: ["scope", "name", "type", "path"],  # (scope and name: in the variable's code)
+        ir.Binary: ["op", "left", "right", "type"],
+        ir.Unary: ["op", "operand", "type"],
+        ir.Const: ["value", "type"],
+    }
+    assert {cls: [f.name for f in dataclasses.fields(cls)] for cls in modelled} == modelled

@@ -33,6 +33,9 @@ if TYPE_CHECKING:
 
 #: The code of a variable whose shape may be reused: an attribute of ``self``, of a page or of the globals
 _CODE = re.compile(r"(self|ll_p\d+|G\d*)\.v_[A-Z0-9_]+\Z")
+#: A variable's code in a line (split out of it) and a word (a name) in what is left
+_CODES = re.compile(r"(?<![\w.])((?:self|ll_p\d+|G\d*)\.v_[A-Z0-9_]+)(?!\w)")
+_WORD = re.compile(r"[A-Za-z0-9_]+")
 _PROBE = ("probe",)
 _DEAD = ("dead",)
 
@@ -112,22 +115,21 @@ def _learn(st: Statements, block: ir.Block, own_group: bool, shape: _Shape) -> _
 
 
 def _holes(lines: list[str], shape: _Shape) -> list[tuple[str | int, ...]] | None:
-    """``lines`` with each variable's code a hole (its index), or None when a variable's name is left elsewhere."""
-    if not shape.codes:
-        return [(line,) for line in lines]
-    codes = sorted(shape.codes, key=len, reverse=True)
-    holes = re.compile(r"(?<![\w.])(" + "|".join(re.escape(code) for code in codes) + r")(?!\w)")
-    found = {part for code in codes for part in (code.partition(".v_")[2], code.partition(".")[2])}
-    names = re.compile(  # the variables' IEC names (upper case: ``_CODE``) and attributes
-        r"(?<![A-Za-z0-9])(" + "|".join(re.escape(name) for name in found) + r")(?![A-Za-z0-9])", re.IGNORECASE
-    )
+    """``lines`` with each variable's code a hole (its index); None when a code of no variable of the block, or a
+    variable's name outside its code (a message naming it), is in them."""
+    codes = shape.codes
+    names = {part for code in codes for part in (code.partition(".v_")[2], code.partition(".")[2])}
     template = []
     for line in lines:
-        parts: list[str | int] = holes.split(line)
+        parts: list[str | int] = _CODES.split(line)
         for i in range(1, len(parts), 2):
-            parts[i] = shape.codes[parts[i]]  # type: ignore[index]
-        if any(names.search(part) for part in parts[::2]):  # type: ignore[arg-type]
-            return None
+            found = codes.get(parts[i])  # type: ignore[arg-type]
+            if found is None:
+                return None
+            parts[i] = found
+        for i in range(0, len(parts), 2):
+            if any(word.upper() in names for word in _WORD.findall(parts[i])):  # type: ignore[arg-type]
+                return None
         template.append(tuple(parts))
     return template
 
@@ -173,10 +175,13 @@ class _Shape:
         if kind is ir.If:
             branches = tuple([(self.value(cond), self.statements(body)) for cond, body in s.branches])
             return (kind, branches, self.statements(s.orelse))
-        if kind is ir.FbCall or kind is ir.FnCall:
-            fields = node_fields(s)
-            del fields["origin"]
-            return (kind, id(s) in self.dead, *[self.value(v) for v in fields.values()])
+        value = self.value
+        if kind is ir.FbCall:
+            inputs = tuple([(pin, value(e)) for pin, e in s.inputs])
+            outputs = tuple([(pin, self.var(v)) for pin, v in s.outputs])
+            return (kind, id(s) in self.dead, self.var(s.instance), inputs, outputs, value(s.en), value(s.eno), s.body)
+        if kind is ir.FnCall:
+            return (kind, id(s) in self.dead, value(s.call), value(s.target), value(s.en), value(s.eno))
         raise _Unshaped
 
     def value(self, value: Any) -> Any:
