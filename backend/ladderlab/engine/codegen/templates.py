@@ -31,10 +31,8 @@ from ...ir.nodes import node_fields
 if TYPE_CHECKING:
     from .statements import Statements
 
-#: The code of a variable whose shape may be reused: an attribute of ``self``, of a page or of the globals
-_CODE = re.compile(r"(self|ll_p\d+|G\d*)\.v_[A-Z0-9_]+\Z")
 #: A variable's code in a line (split out of it) and a word (a name) in what is left
-_CODES = re.compile(r"(?<![\w.])((?:self|ll_p\d+|G\d*)\.v_[A-Z0-9_]+)(?!\w)")
+_CODES = re.compile(r"(?<![\w.])((?:self|ll_p\d+|G\d*)\.v_\w+)")
 _WORD = re.compile(r"[A-Za-z0-9_]+")
 _PROBE = ("probe",)
 _DEAD = ("dead",)
@@ -209,12 +207,13 @@ class _Shape:
         return id(value)  # a type
 
     def var(self, var: ir.Var) -> tuple:
-        code, ty, _ = self.place(var)
-        if code.startswith("ll_t_"):  # a temporary's local: the same in every network
-            held: Any = code
-        else:
-            match = _CODE.match(code)
-            if match is None:
+        code, ty, page = self.place(var)
+        if page or code.startswith("self.v_"):  # a slot of this POU (on page ``page``: ``ll_p2.v_X``)
+            if code.startswith("v_w", code.find(".") + 1):  # an escaped name (names.escape): not the IEC name
                 raise _Unshaped
-            held = (match.group(1), self.codes.setdefault(code, len(self.codes)))  # (the object read through)
+            held: Any = (page, self.codes.setdefault(code, len(self.codes)))
+        elif code.startswith("ll_t_"):  # a temporary's local: the same in every network
+            held = code
+        else:  # a global, an in-out, a located variable ...
+            raise _Unshaped
         return (id(var.type), self.value(var.path) if var.path else (), id(ty), held)
