@@ -8,11 +8,11 @@ statements' origins registered in the same order and its lines tagged as the fir
 
 The shape (``_Shape``) is everything the emitted text may depend on: each statement and expression node with all
 its fields (types, constants, operators, pins, FB types, paths), which stores liveness.py drops or folds, the
-indentation, and for each variable the form of its code (the object it is read through: ``self``, a page, the
-globals) and which variables are the same (``x AND x``, a read forwarded from the local just stored). Only the
-variables' names are left out. A network is emitted as usual, and its shape never reused, when anything else
-could differ: a variable reached otherwise than as ``owner.v_NAME`` (an in-out, a located variable, an escaped
-name), a name of one of its variables left in the text outside its code (a message naming it), a statement this
+indentation, and for each variable the page of its slot (``self.v_X``, ``ll_p2.v_X``) and which variables are the
+same (``x AND x``, a read forwarded from the local just stored). Only the variables' names are left out. A network
+is emitted as usual, and its shape never reused, when anything else could differ: a variable that is not a slot
+of the POU named plainly (a global, an in-out, a located variable, an escaped name), a variable's name left in
+the text outside its code (a message naming it), a code of no variable of the network, a statement this
 module does not model (loops, jumps, returns), or a side effect of the emission besides the origins and the
 pages and temporaries used (a diagnostic, a bound constant, a numbered temporary, an outlined body). Only the
 fast variant, which records no probe, is filled in (tests/engine/test_block_templates.py compares the module,
