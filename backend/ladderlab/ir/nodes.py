@@ -25,7 +25,7 @@ def quick_init(cls: type[T]) -> type[T]:
     instead of ``object.__setattr__`` (the frozen class's own way, ~40 % slower): a 50,000-network diagram makes
     ~1 million expression nodes (issue 27). Same parameters, defaults and fields; for classes without
     ``__post_init__`` or default factories (tests/ir/test_nodes.py compares it with the dataclass's own)."""
-    own = fields(cls)  # type: ignore[arg-type]
+    own = fields(cls)  # type: ignore[arg-type]  # a dataclass (the decorator goes above @dataclass)
     assert not hasattr(cls, "__post_init__") and all(f.default_factory is MISSING for f in own), cls
     scope: dict[str, Any] = {f"set_{f.name}": getattr(cls, f.name).__set__ for f in own}
     scope.update({f"default_{f.name}": f.default for f in own if f.default is not MISSING})
@@ -34,7 +34,7 @@ def quick_init(cls: type[T]) -> type[T]:
     exec(f"def __init__(self, {parameters}):\n{body}", scope)
     init = scope["__init__"]
     init.__qualname__ = f"{cls.__qualname__}.__init__"
-    cls.__init__ = init  # type: ignore[misc]
+    cls.__init__ = init  # type: ignore[misc]  # the dataclass's own, replaced
     return cls
 
 

@@ -170,24 +170,24 @@ def _add_reads(e: ir.Expr | None, temps: frozenset[str], found: set[str]) -> Non
     """Add the temporaries ``e`` reads to ``found``. (Plain reads, NOT and operators are walked directly: this runs
     for every expression of a 10,000-network program, and ``expression_nodes``'s nested generators cost twice as
     much; adding to one set spares a set per node.)"""
-    kind = type(e)
-    if kind is ir.Var and not e.path:  # type: ignore[union-attr]
-        name = _temp(e, temps)  # type: ignore[arg-type]
-        if name is not None:
-            found.add(name)
-    elif kind is ir.Const or e is None:
+    if type(e) is ir.Var:
+        if not e.path:
+            name = _temp(e, temps)
+            if name is not None:
+                found.add(name)
+            return
+    elif type(e) is ir.Const or e is None:
         return
-    elif kind is ir.Binary:
-        _add_reads(e.left, temps, found)  # type: ignore[union-attr]
-        _add_reads(e.right, temps, found)  # type: ignore[union-attr]
-    elif kind is ir.Unary:
-        _add_reads(e.operand, temps, found)  # type: ignore[union-attr]
-    else:
-        found.update(
-            name
-            for node in expression_nodes(e)
-            if isinstance(node, ir.Var) and (name := _temp(node, temps)) is not None
-        )
+    elif type(e) is ir.Binary:
+        _add_reads(e.left, temps, found)
+        _add_reads(e.right, temps, found)
+        return
+    elif type(e) is ir.Unary:
+        _add_reads(e.operand, temps, found)
+        return
+    found.update(
+        name for node in expression_nodes(e) if isinstance(node, ir.Var) and (name := _temp(node, temps)) is not None
+    )
 
 
 def _pure(e: ir.Expr) -> bool:

@@ -171,14 +171,12 @@ class _Walk:
 
     def statements(self, statements: list[ir.Stmt]) -> None:
         for s in statements:
-            kind = type(s)
-            if kind is ir.Probe:  # (most statements of a diagram: a probe of a power flow's temporary)
-                value = s.value  # type: ignore[attr-defined]
-                if type(value) is ir.Var and not value.path:
+            if type(s) is ir.Probe:  # (most statements of a diagram: a probe of a power flow's temporary)
+                if type(s.value) is ir.Var and not s.value.path:
                     continue
-            elif kind is ir.FbCall:
-                self.fb_calls.append(s)  # type: ignore[arg-type]
-            elif kind is ir.Jump:
+            elif type(s) is ir.FbCall:
+                self.fb_calls.append(s)
+            elif type(s) is ir.Jump:
                 self.jumps = True
             for e in own_expressions(s):
                 if e is not None:

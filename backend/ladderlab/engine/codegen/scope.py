@@ -123,7 +123,7 @@ class Scope:
         local = self.temp_locals.get(upper)
         if local is not None:
             return local, slot.type, 0
-        place = self.layout.places[upper]  # type: ignore[union-attr]  # (by the name found: once per variable)
+        place = self.layout.places[upper]  # type: ignore[union-attr]  # a PROGRAM / FB has a layout (by the name found)
         return f"{_page_owner(place.page)}.{place.attr}", slot.type, place.page
 
     def slot_source(self, name: str) -> str:

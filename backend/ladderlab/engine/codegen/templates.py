@@ -62,16 +62,16 @@ class BlockTemplates:
         shape = _Shape(st)
         try:
             key = (st.src.depth, st.blocks, own_group, shape.statements(block.statements))
-            template = self._found.get(key, _Template)
+            template = self._found.get(key, False)
         except (_Unshaped, TypeError):  # (TypeError: an unhashable field)
             st.statements(block.statements, own_group=own_group)
             return
-        if template is _Template:  # a new shape: emit it and learn it
-            self._found[key] = _learn(st, block, own_group, shape)
+        if isinstance(template, _Template):
+            _fill(st, template, shape)
         elif template is None:
             st.statements(block.statements, own_group=own_group)
-        else:
-            _fill(st, template, shape)  # type: ignore[arg-type]
+        else:  # a new shape: emit it and learn it
+            self._found[key] = _learn(st, block, own_group, shape)
 
 
 def _learn(st: Statements, block: ir.Block, own_group: bool, shape: _Shape) -> _Template | None:
@@ -119,15 +119,17 @@ def _holes(lines: list[str], shape: _Shape) -> list[tuple[str | int, ...]] | Non
     names = {part for code in codes for part in (code.partition(".v_")[2], code.partition(".")[2])}
     template = []
     for line in lines:
-        parts: list[str | int] = _CODES.split(line)
-        for i in range(1, len(parts), 2):
-            found = codes.get(parts[i])  # type: ignore[arg-type]
-            if found is None:
+        parts: list[str | int] = []
+        for i, piece in enumerate(_CODES.split(line)):
+            if i % 2:  # a code
+                found = codes.get(piece)
+                if found is None:
+                    return None
+                parts.append(found)
+            elif any(word.upper() in names for word in _WORD.findall(piece)):
                 return None
-            parts[i] = found
-        for i in range(0, len(parts), 2):
-            if any(word.upper() in names for word in _WORD.findall(parts[i])):  # type: ignore[arg-type]
-                return None
+            else:
+                parts.append(piece)
         template.append(tuple(parts))
     return template
 
@@ -138,7 +140,7 @@ def _fill(st: Statements, template: _Template, shape: _Shape) -> None:
     codes = list(shape.codes)
     outer = src.origin
     for parts in template.lines:
-        src.lines.append("".join(part if type(part) is str else codes[part] for part in parts))  # type: ignore[index]
+        src.lines.append("".join(part if isinstance(part, str) else codes[part] for part in parts))
     walked = shape.walked
     oids = [module.origin(walked[i].origin, walked[i]) for i in template.statements]
     src.line_origins.extend(outer if k < 0 else oids[k] for k in template.origins)
