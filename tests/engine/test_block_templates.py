@@ -1,5 +1,6 @@
 """Networks of one shape filled in from a template (codegen/templates.py, issue 27) give the very module, line origins
-and origins that emitting every network on its own gives: the same code, the same fault locations.
+and origins that emitting every network on its own gives, in the fast variant and in the monitor variant's unviewed
+twins: the same code, the same fault locations.
 
 The diagrams mix shapes whose variables are the same or different (``A AND A`` folds to ``A``), of other types
 (INT compares, an ADD box), FB boxes, set/reset and edge coils, globals, and enough variables that later ones live
@@ -30,13 +31,13 @@ def _plain(self: templates.BlockTemplates, st_: object, block: object, own_group
     st_.statements(block.statements, own_group=own_group)  # type: ignore[attr-defined]
 
 
-def _both(project: Project) -> None:
+def _both(project: Project, variant: str = "fast") -> None:
     lowered = lower_project(project)
     assert lowered.program is not None, [d.format() for d in lowered.diagnostics]
-    filled = generate(lowered.program, "fast")
+    filled = generate(lowered.program, variant)
     with pytest.MonkeyPatch.context() as patched:
         patched.setattr(templates.BlockTemplates, "emit", _plain)
-        plain = generate(lowered.program, "fast")
+        plain = generate(lowered.program, variant)
     assert filled.source == plain.source
     assert filled.line_origins == plain.line_origins
     assert filled.origins == plain.origins
@@ -95,25 +96,30 @@ def test_networks_of_repeated_shapes_give_the_plain_emission(
 ) -> None:
     networks = [shapes[i % len(shapes)] for i in range(repeats * len(shapes))]
     _both(_project(networks))
+    _both(_project(networks), "monitor")  # (its unviewed twins: the chunks that record no probe)
 
 
 @pytest.mark.parametrize("language", ["ld", "fbd"])
 @pytest.mark.parametrize("timed", [1, 4])
-def test_the_benchmark_diagrams_give_the_plain_emission(language: str, timed: int) -> None:
-    _both(benchmark_project(language, 400, timed))
+@pytest.mark.parametrize("variant", ["fast", "monitor"])
+def test_the_benchmark_diagrams_give_the_plain_emission(language: str, timed: int, variant: str) -> None:
+    _both(benchmark_project(language, 400, timed), variant)
 
 
-def test_the_monitor_and_debug_variants_have_no_templates(monkeypatch: pytest.MonkeyPatch) -> None:
+def test_only_code_without_probes_is_filled_in(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The debug variant has no templates; the monitor variant fills in only its unviewed twins."""
     lowered = lower_project(benchmark_project("ld", 20))
     assert lowered.program is not None
-    for variant in ("monitor", "debug"):
-        module = generate(lowered.program, variant).context
-        assert module.variant == variant
-    calls: list[object] = []
-    monkeypatch.setattr(templates.BlockTemplates, "emit", lambda *args: calls.append(args))
-    generate(lowered.program, "monitor")
+    calls: list[bool] = []
+    monkeypatch.setattr(
+        templates.BlockTemplates,
+        "emit",
+        lambda self, st_, block, own: (calls.append(st_.probes is None), _plain(self, st_, block, own)),
+    )
     generate(lowered.program, "debug")
     assert calls == []
+    generate(lowered.program, "monitor")
+    assert calls and all(calls)
 
 
 def test_the_shape_models_every_field_of_the_statements_it_fills() -> None:

@@ -54,8 +54,9 @@ class Scope:
         #: upper-case slot name -> the local it lives in (fast variant; ``temp_locals``)
         self.temp_locals: dict[str, str] = {} if self.function else temp_locals(module, pou)
         self.temps_used: set[str] = set()  # of ``temp_locals``, by the chunk being generated
-        #: the fast variant's network shapes (templates.py), when its body is a diagram's
-        self.templates = BlockTemplates() if not (module.debug or module.probes or self.function) else None
+        #: the network shapes of the code that records no probe (templates.py): the fast variant's, the monitor
+        #: variant's unviewed twins
+        self.templates = BlockTemplates() if not (module.debug or self.function) else None
 
     def temp(self, prefix: str) -> str:
         self._temps += 1
