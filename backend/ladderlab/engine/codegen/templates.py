@@ -88,8 +88,10 @@ def _learn(st: Statements, block: ir.Block, own_group: bool, shape: _Shape) -> _
         temps |= used_temps
         pages |= used_pages
         scope.temps_used, scope.pages_used = temps, pages
-    st._output_line = None  # (a network's first line is its comment: nothing chains onto its last line)
     if counts != (len(module.diagnostics), len(module.bound), scope._temps, len(st.outlines.lines)):
+        return None
+    held = st._output_line  # an inlined FB's output store that a following statement may chain onto
+    if held is not None and held[0] is src and held[1] == len(src.lines) - 1:  # (Statements._chained): the last line
         return None
     position = {id(s): i for i, s in enumerate(shape.walked)}
     statements = []
@@ -146,7 +148,7 @@ def _fill(st: Statements, template: _Template, shape: _Shape) -> None:
     src.line_origins.extend(outer if k < 0 else oids[k] for k in template.origins)
     scope.temps_used |= template.temps
     scope.pages_used |= template.pages
-    st._output_line = None
+    st._output_line = None  # (as its shape's first network left it: ``_learn``)
 
 
 class _Shape:
