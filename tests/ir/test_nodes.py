@@ -4,6 +4,7 @@ nodes have slots, and their fast copy is ``dataclasses.replace``."""
 from __future__ import annotations
 
 import dataclasses
+import inspect
 
 import pytest
 from hypothesis import given
@@ -44,3 +45,26 @@ def test_node_copy_is_dataclasses_replace(name: str, line: int, element: str) ->
     other = diagram_origin("P", "n2", element)
     assert nodes.node_copy(assign, {"origin": other}) == dataclasses.replace(assign, origin=other)
     assert nodes.node_fields(assign) == {f.name: getattr(assign, f.name) for f in dataclasses.fields(assign)}
+
+
+def test_quick_init_sets_the_fields_as_the_dataclass_init_does() -> None:
+    """``quick_init``'s constructor (issue 27) takes the dataclass's parameters with their defaults, positionally and
+    by name, sets every field and leaves the node frozen, equal and hashable by value."""
+    inits = {c: getattr(c.__init__, "__code__", None) for c in vars(nodes).values() if isinstance(c, type)}
+    quick = [c for c, code in inits.items() if code is not None and "set_" in "".join(code.co_names)]
+    assert {c.__name__ for c in quick} >= {"Origin", "Const", "Var", "Unary", "Binary", "Call", "Member"}
+    for cls in quick:
+        fields = dataclasses.fields(cls)
+        parameters = list(inspect.signature(cls.__init__).parameters.values())[1:]
+        assert [(p.name, p.default) for p in parameters] == [
+            (f.name, inspect.Parameter.empty if f.default is dataclasses.MISSING else f.default) for f in fields
+        ]
+        values = [object() for _ in fields]
+        for made in (cls(*values), cls(**{f.name: v for f, v in zip(fields, values)})):
+            assert [getattr(made, f.name) for f in fields] == values
+            assert made == cls(*values) and hash(made) == hash(cls(*values))
+            with pytest.raises(dataclasses.FrozenInstanceError):
+                setattr(made, fields[0].name, None)
+        required = [f for f in fields if f.default is dataclasses.MISSING]
+        made = cls(*values[: len(required)])
+        assert [getattr(made, f.name) for f in fields[len(required) :]] == [f.default for f in fields[len(required) :]]

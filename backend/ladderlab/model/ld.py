@@ -105,7 +105,8 @@ class LdBody(Model):
 
     def calls(self) -> set[str]:
         """The names (upper case) of the functions and FB types the boxes call: the body's edges of the call graph."""
-        return {e.call.upper() for n in self.networks for e in walk(n.elements) if isinstance(e, Box)}
+        boxes = (e for n in self.networks for e in walk(n.elements) if e.type == "box")  # (the tag: see walk)
+        return {box.call.upper() for box in boxes}
 
 
 def _deepest(elements: Any) -> str | None:

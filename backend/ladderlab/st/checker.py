@@ -524,6 +524,7 @@ class ProjectChecker:
         """Declare ``block``'s variables in ``table``; ``record``: check their FB_init arguments (st/fb_init.py);
         ``twice(name)`` adds to the message of a name declared twice."""
         report = checker.report
+        constant, retain, owner = block.constant, block.retain, pou.name if pou else None  # (once, not per name)
         for decl in block.decls:
             spec, written = instance_spec(decl.type, project_blocks(self.result.pous))
             ty = self.resolve(spec, checker)
@@ -549,12 +550,12 @@ class ProjectChecker:
                     spec,
                     init,
                     name.address,
-                    block.constant,
-                    block.retain,
+                    constant,
+                    retain,
                     decl.edge,
                     decl.comment,
                     name.span,
-                    pou.name if pou else None,
+                    owner,
                 )
                 table[key] = symbol
                 if record:

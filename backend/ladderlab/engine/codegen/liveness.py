@@ -68,16 +68,21 @@ def _backward(
         if kind is ir.Assign:
             target = _temp(s.target, temps)
             if target is not None and not s.target.path:
-                if target not in live and _pure(s.value):
+                pure = _pure(s.value)
+                if pure and target not in live:
                     dead.add(id(s))
                     continue
-                if following is not None:
+                if pure and following is not None:
                     once = _fold(target, *following, temps)
-                    if once is not None and _pure(s.value):
+                    if once is not None:
                         folds[id(s)] = once
-                live = (live - {target}) | _reads(s.value, temps)
+                live = set(live)
+                live.discard(target)
+                _add_reads(s.value, temps, live)
             else:
-                live = live | _reads(s.target, temps) | _reads(s.value, temps)
+                live = set(live)
+                _add_reads(s.target, temps, live)
+                _add_reads(s.value, temps, live)
         elif kind is ir.If:
             after = live
             live = set()
@@ -86,16 +91,17 @@ def _backward(
             live |= _backward(s.orelse, set(after), temps, dead, folds)
         elif kind is ir.FnCall or kind is ir.FbCall:
             eno = _temp(s.eno, temps) if s.eno is not None and not s.eno.path else None
+            live = set(live)
             if eno is not None:
                 if eno not in live:
                     dead.add(id(s))
-                live = live - {eno}  # written on every path: TRUE when the call ran, FALSE when EN was FALSE
+                live.discard(eno)  # written on every path: TRUE when the call ran, FALSE when EN was FALSE
             if kind is ir.FnCall:
                 expressions = (s.en, s.call, s.target)
             else:
                 expressions = (s.en, s.instance, *(e for _, e in s.inputs), *(v for _, v in s.outputs))
             for e in expressions:
-                live = live | _reads(e, temps)
+                _add_reads(e, temps, live)
         else:  # loops, CASE, RETURN, EXIT, jumps: nothing is dropped across them
             return set(temps)
         following = (s, after, live)
@@ -146,25 +152,42 @@ def _exposed_probe_reads(statements: list[ir.Stmt], temps: frozenset[str]) -> se
 def _temp(var: ir.Var, temps: frozenset[str]) -> str | None:
     if var.scope != "local":
         return None
-    name = var.name.upper()
+    name = var.name
+    if name in temps:  # (the lowering names its temporaries in upper case: no copy of the name to make)
+        return name
+    name = name.upper()
     return name if name in temps else None
 
 
 def _reads(e: ir.Expr | None, temps: frozenset[str]) -> set[str]:
-    """The temporaries ``e`` reads. (Plain reads, NOT and operators are walked directly: this runs for every
-    expression of a 10,000-network program, and ``expression_nodes``'s nested generators cost twice as much.)"""
-    if isinstance(e, ir.Var) and not e.path:
-        name = _temp(e, temps)
-        return set() if name is None else {name}
-    if isinstance(e, ir.Const):
-        return set()
-    if isinstance(e, ir.Binary):
-        return _reads(e.left, temps) | _reads(e.right, temps)
-    if isinstance(e, ir.Unary):
-        return _reads(e.operand, temps)
-    return {
+    """The temporaries ``e`` reads."""
+    found: set[str] = set()
+    _add_reads(e, temps, found)
+    return found
+
+
+def _add_reads(e: ir.Expr | None, temps: frozenset[str], found: set[str]) -> None:
+    """Add the temporaries ``e`` reads to ``found``. (Plain reads, NOT and operators are walked directly: this runs
+    for every expression of a 10,000-network program, and ``expression_nodes``'s nested generators cost twice as
+    much; adding to one set spares a set per node.)"""
+    if type(e) is ir.Var:
+        if not e.path:
+            name = _temp(e, temps)
+            if name is not None:
+                found.add(name)
+            return
+    elif type(e) is ir.Const or e is None:
+        return
+    elif type(e) is ir.Binary:
+        _add_reads(e.left, temps, found)
+        _add_reads(e.right, temps, found)
+        return
+    elif type(e) is ir.Unary:
+        _add_reads(e.operand, temps, found)
+        return
+    found.update(
         name for node in expression_nodes(e) if isinstance(node, ir.Var) and (name := _temp(node, temps)) is not None
-    }
+    )
 
 
 def _pure(e: ir.Expr) -> bool:

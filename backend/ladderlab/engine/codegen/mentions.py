@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass
+from typing import Any
 
 from ...ir import nodes as ir
 from ...ir import types as t
@@ -70,27 +71,24 @@ def _calls(e: ir.Expr, found: list[ir.Call]) -> None:
 
 
 def own_expressions(s: ir.Stmt) -> Iterable[ir.Expr | None]:
-    if isinstance(s, ir.Assign):
-        return (s.target, s.value)
-    if isinstance(s, ir.If):
-        return [cond for cond, _ in s.branches]
-    if isinstance(s, ir.Case):
-        return (s.selector,)
-    if isinstance(s, ir.For):
-        return (s.var, s.start, s.end, s.step)
-    if isinstance(s, ir.While):
-        return (s.cond,)
-    if isinstance(s, ir.Repeat):
-        return (s.until,)
-    if isinstance(s, ir.FbCall):
-        return (s.en, *(e for _, e in s.inputs), *(v for _, v in s.outputs), s.eno)
-    if isinstance(s, ir.FnCall):
-        return (s.en, s.call, s.target, s.eno)
-    if isinstance(s, ir.Jump):
-        return (s.cond,)
-    if isinstance(s, ir.Probe):
-        return (s.value,)
-    return ()
+    """The expressions of ``s`` itself, not of its nested statements. (By the statement's class, not a chain of
+    isinstance checks: it runs for every statement of a large body, probes first of all, in ``mentions``.)"""
+    own = _OWN_EXPRESSIONS.get(type(s))
+    return () if own is None else own(s)
+
+
+_OWN_EXPRESSIONS: dict[type, Callable[[Any], Iterable[ir.Expr | None]]] = {
+    ir.Assign: lambda s: (s.target, s.value),
+    ir.Probe: lambda s: (s.value,),
+    ir.If: lambda s: [cond for cond, _ in s.branches],
+    ir.Case: lambda s: (s.selector,),
+    ir.For: lambda s: (s.var, s.start, s.end, s.step),
+    ir.While: lambda s: (s.cond,),
+    ir.Repeat: lambda s: (s.until,),
+    ir.FbCall: lambda s: (s.en, *(e for _, e in s.inputs), *(v for _, v in s.outputs), s.eno),
+    ir.FnCall: lambda s: (s.en, s.call, s.target, s.eno),
+    ir.Jump: lambda s: (s.cond,),
+}
 
 
 def statement_vars(s: ir.Stmt) -> list[ir.Var]:
@@ -173,7 +171,10 @@ class _Walk:
 
     def statements(self, statements: list[ir.Stmt]) -> None:
         for s in statements:
-            if type(s) is ir.FbCall:
+            if type(s) is ir.Probe:  # (most statements of a diagram: a probe of a power flow's temporary)
+                if type(s.value) is ir.Var and not s.value.path:
+                    continue
+            elif type(s) is ir.FbCall:
                 self.fb_calls.append(s)
             elif type(s) is ir.Jump:
                 self.jumps = True
@@ -211,49 +212,57 @@ def addressed_locals(found: Mentions) -> set[str]:
     """The POU's own variables (not its in-outs or externals) that its body takes REF()/ADR() of: a FUNCTION that
     has any gives each call a ``runtime.Frame`` so a reference into it dangles once the call returned (a PROGRAM /
     FUNCTION_BLOCK: when any is a VAR_TEMP, ``addressed_temps``)."""
-    own = {s.name.upper() for s in found.pou.slots if s.var_class not in ("VAR_IN_OUT", "VAR_EXTERNAL")}
-    return set(found.addressed & own)
+    if not found.addressed:  # (most POUs: no set of all its slots' names to build)
+        return set()
+    return set(found.addressed & _own_names(found.pou))
+
+
+def _own_names(pou: ir.Pou) -> set[str]:
+    """The upper-case names of the POU's own variables: neither its in-outs nor its externals."""
+    return {s.name.upper() for s in pou.slots if s.var_class not in ("VAR_IN_OUT", "VAR_EXTERNAL")}
 
 
 def addresses_in_out(found: Mentions) -> bool:
     """Whether the POU's body takes REF()/ADR() of (a part of) its own VAR_IN_OUT: such a reference refers to the
     caller's variable, so a caller passing its own call's variable makes it carry the call's frame."""
-    return any(s.var_class == "VAR_IN_OUT" and s.name.upper() in found.addressed for s in found.pou.slots)
+    return bool(found.addressed) and any(
+        s.var_class == "VAR_IN_OUT" and s.name.upper() in found.addressed for s in found.pou.slots
+    )
 
 
 def passed_in_out(found: Mentions, in_out_pin: Callable[[str, str], bool]) -> set[str]:
     """The POU's own variables (not its in-outs or externals) passed, whole or a part, to a VAR_IN_OUT: of a
     function or method called, or a pin of an FB called for which ``in_out_pin(fb type, pin)`` holds."""
-    own = {s.name.upper() for s in found.pou.slots if s.var_class not in ("VAR_IN_OUT", "VAR_EXTERNAL")}
 
     def root(v: object) -> str | None:
         if not isinstance(v, ir.Var) or v.scope != "local" or any(isinstance(p, ir.Deref) for p in v.path):
             return None
-        return v.name.upper() if v.name.upper() in own else None
+        return v.name.upper()
 
-    passed = {root(v) for v in found.in_out_args}
+    passed = {name for v in found.in_out_args if (name := root(v)) is not None}
     for s in found.fb_calls:
         if isinstance(s.instance.type, t.FbInstance):
             fb = s.instance.type.fb
-            passed.update(root(v) for pin, v in s.inputs if in_out_pin(fb, pin))
-    return {name for name in passed if name is not None}
+            passed.update(name for pin, v in s.inputs if in_out_pin(fb, pin) and (name := root(v)) is not None)
+    return passed & _own_names(found.pou) if passed else passed
 
 
 def addressed_temps(found: Mentions) -> set[str]:
     """The VAR_TEMP of a PROGRAM / FUNCTION_BLOCK that its body takes REF()/ADR() of: its calls then have a
     ``runtime.Frame``, as a FUNCTION's do, for the VAR_TEMP live only while the call runs."""
-    temps = {s.name.upper() for s in found.pou.slots if s.var_class == "VAR_TEMP"}
-    return addressed_locals(found) & temps
+    addressed = addressed_locals(found)
+    if not addressed:
+        return addressed
+    return addressed & {s.name.upper() for s in found.pou.slots if s.var_class == "VAR_TEMP"}
 
 
 def referenced_locals(found: Mentions, by_value: Callable[[str], bool] = lambda fb: False) -> set[str]:
     """The POU's own slots passed whole by reference somewhere in its body (to a VAR_IN_OUT): a FUNCTION boxes
     them in a 1-element list, the fast variant keeps none of them in a local (scope.temp_locals). The inputs of
     an FB call count too, unless ``by_value(fb type)`` says the FB has no VAR_IN_OUT (a standard FB)."""
-    local = {s.name.upper() for s in found.pou.slots if s.var_class not in ("VAR_IN_OUT", "VAR_EXTERNAL")}
 
     def whole_local(v: object) -> bool:
-        return isinstance(v, ir.Var) and v.scope == "local" and not v.path and v.name.upper() in local
+        return isinstance(v, ir.Var) and v.scope == "local" and not v.path
 
     referenced = {v.name.upper() for v in found.in_out_args if whole_local(v)}
     for s in found.fb_calls:
@@ -261,7 +270,7 @@ def referenced_locals(found: Mentions, by_value: Callable[[str], bool] = lambda 
             isinstance(s.instance.type, t.FbInstance) and by_value(s.instance.type.fb)
         ):  # a global FB instance's VAR_IN_OUT pin (boxing an input is harmless)
             referenced.update(v.name.upper() for _, v in s.inputs if whole_local(v))
-    return referenced
+    return referenced & _own_names(found.pou) if referenced else referenced
 
 
 def boxed_locals(found: Mentions) -> set[str]:

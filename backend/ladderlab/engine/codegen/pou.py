@@ -160,8 +160,9 @@ def emit_inits(
     references to them stay valid across restarts (program instances: a test's links to them). They come last: a
     program's reference to an element of a global array (``p : PTR_TO INT := ADR(arr[0])``) needs the array."""
     before = len(src.lines)
-    instances = [p for p in places if p.slot.name.upper() in kept]
-    places = [p for p in places if p.slot.name.upper() not in kept]
+    instances = [p for p in places if p.slot.name.upper() in kept] if kept else []
+    if kept:
+        places = [p for p in places if p.slot.name.upper() not in kept]
     retained = [p for p in places if p.slot.retain]
     if retained:
         src.line("if not warm:")

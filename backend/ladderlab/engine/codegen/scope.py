@@ -24,6 +24,7 @@ from . import names
 from .context import CodegenError, ModuleContext, std_fb_class
 from .layout import Layout, Place
 from .mentions import addressed_locals, addressed_temps, passed_in_out, referenced_locals
+from .templates import BlockTemplates
 from .typeinfo import is_composite
 
 
@@ -53,6 +54,9 @@ class Scope:
         #: upper-case slot name -> the local it lives in (fast variant; ``temp_locals``)
         self.temp_locals: dict[str, str] = {} if self.function else temp_locals(module, pou)
         self.temps_used: set[str] = set()  # of ``temp_locals``, by the chunk being generated
+        #: the network shapes of the code that records no probe (templates.py): the fast variant's, the monitor
+        #: variant's unviewed twins
+        self.templates = BlockTemplates() if not (module.debug or self.function) else None
 
     def temp(self, prefix: str) -> str:
         self._temps += 1
@@ -81,16 +85,21 @@ class Scope:
 
     def root(self, var: ir.Var) -> tuple[str, t.IrType]:
         """Source reading (and assignable as) the root slot of ``var``, and the slot's type."""
-        key = (var.scope, var.name)
-        found = self._roots.get(key)
-        if found is None:
-            found = self._roots[key] = self._root(var)
-        code, ty, page = found
+        code, ty, page = self.placed(var)
         if page:  # every chunk function loads the pages its own statements use
             self.pages_used.add(page)
         elif code.startswith("ll_t_"):  # ... and the temporaries they use (only temp_locals' are named so)
             self.temps_used.add(var.name.upper())
         return code, ty
+
+    def placed(self, var: ir.Var) -> tuple[str, t.IrType, int]:
+        """``root``'s source and type, and the page its slot lives on, without noting the page or temporary as
+        used by the chunk being generated."""
+        key = (var.scope, var.name)
+        found = self._roots.get(key)
+        if found is None:
+            found = self._roots[key] = self._root(var)
+        return found
 
     def _root(self, var: ir.Var) -> tuple[str, t.IrType, int]:
         """``root``'s source and type, and the page its slot lives on (0: ``self``, a local or a global)."""
@@ -108,13 +117,14 @@ class Scope:
                 return names.slot(slot.name), slot.type, 0
             key = names.escape(slot.name)
             return f"ll_c_{key}[ll_k_{key}]", slot.type, 0
+        upper = slot.name.upper()
         if self.function:
             attr = names.slot(slot.name)
-            return (f"{attr}[0]" if slot.name.upper() in self.boxed else attr), slot.type, 0
-        local = self.temp_locals.get(slot.name.upper())
+            return (f"{attr}[0]" if upper in self.boxed else attr), slot.type, 0
+        local = self.temp_locals.get(upper)
         if local is not None:
             return local, slot.type, 0
-        place = self._place(var.name)
+        place = self.layout.places[upper]  # type: ignore[union-attr]  # a PROGRAM / FB has a layout (by the name found)
         return f"{_page_owner(place.page)}.{place.attr}", slot.type, place.page
 
     def slot_source(self, name: str) -> str:
@@ -176,14 +186,14 @@ def framed_variables(module: ModuleContext, pou: ir.Pou) -> set[str]:
     and, when some POU takes REF()/ADR() of its VAR_IN_OUT, those passed to an in-out (the reference the callee
     takes refers to them). Empty for the many POUs that do neither: their code has no frame."""
     found = module.mentions(pou)
-    if pou.kind == "function":
-        own, kept = addressed_locals(found), None
-    else:
-        own, kept = addressed_temps(found), {s.name.upper() for s in pou.slots if s.var_class == "VAR_TEMP"}
+    function = pou.kind == "function"
+    own = addressed_locals(found) if function else addressed_temps(found)
     if not module.in_outs_addressed:
         return own
     passed = passed_in_out(found, lambda fb, pin: _in_out_pin(module, fb, pin))
-    return own | (passed if kept is None else passed & kept)
+    if not function:  # (the set of a large POU's VAR_TEMP names made only here)
+        passed &= {s.name.upper() for s in pou.slots if s.var_class == "VAR_TEMP"}
+    return own | passed
 
 
 def _in_out_pin(module: ModuleContext, fb: str, pin: str) -> bool:

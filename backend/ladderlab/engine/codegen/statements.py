@@ -178,7 +178,15 @@ class Statements:
             with self.src.at(self.module.origin(origin)):
                 self.pause("network" if origin.network is not None else "entry", origin)
         if unit is None:
-            self.statements(block.statements, own_group=not self.plan.straight)
+            if (
+                self.scope.templates is not None
+                and self.probes is None
+                and origin.network is not None
+                and not self.plan.jumps
+            ):
+                self.scope.templates.emit(self, block, not self.plan.straight)  # (a network of this shape before)
+            else:
+                self.statements(block.statements, own_group=not self.plan.straight)
             return
         self.network = unit
         self.statements(block.statements)

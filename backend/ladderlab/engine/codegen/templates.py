@@ -1,0 +1,223 @@
+"""A network's fast-variant code filled in from the code of an earlier network of the same shape (issue 27).
+
+A large LD/FBD body repeats a few network shapes with other variables: ``--| A1 |--|/ B1 |--( C1 )--`` and
+``--| A2 |--|/ B2 |--( C2 )--`` differ in nothing but the slots they name. ``BlockTemplates`` emits the first
+network of a shape as ``Statements`` does and keeps its lines with each variable's code (``self.v_A1``) as a
+hole; a later network of that shape gets those lines with its own variables' codes (``self.v_A2``), its
+statements' origins registered in the same order and its lines tagged as the first network's were.
+
+The shape (``_Shape``) is everything the emitted text may depend on: each statement and expression node with all
+its fields (types, constants, operators, pins, FB types, paths), which stores liveness.py drops or folds, the
+indentation, and for each variable the page of its slot (``self.v_X``, ``ll_p2.v_X``) and which variables are the
+same (``x AND x``, a read forwarded from the local just stored). Only the variables' names are left out. A network
+is emitted as usual, and its shape never reused, when anything else could differ: a variable that is not a slot
+of the POU named plainly (a global, an in-out, a located variable, an escaped name), a variable's name left in
+the text outside its code (a message naming it), a code of no variable of the network, a statement this
+module does not model (loops, jumps, returns), or a side effect of the emission besides the origins and the
+pages and temporaries used (a diagnostic, a bound constant, a numbered temporary, an outlined body). Only the
+fast variant, which records no probe, is filled in (tests/engine/test_block_templates.py compares the module,
+its line origins and its origins with those of the plain emission).
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
+
+from ...ir import nodes as ir
+from ...ir.nodes import node_fields
+
+if TYPE_CHECKING:
+    from .statements import Statements
+
+#: A variable's code in a line (split out of it) and a word (a name) in what is left
+_CODES = re.compile(r"(?<![\w.])((?:self|ll_p\d+|G\d*)\.v_\w+)")
+_WORD = re.compile(r"[A-Za-z0-9_]+")
+_PROBE = ("probe",)
+_DEAD = ("dead",)
+
+
+class _Unshaped(Exception):
+    """The block has something a template does not model: it is emitted as usual."""
+
+
+@dataclass(slots=True)
+class _Template:
+    lines: list[tuple[str | int, ...]]  # literal parts and the indices of the block's variables' codes
+    origins: list[int]  # per line: the index (in ``statements``) of the statement it comes from, -1: the block's
+    statements: list[int]  # the walk positions of the statements that registered an origin, in order
+    temps: frozenset[str]  # the temporaries' locals and the pages the block's code uses
+    pages: frozenset[int]
+
+
+class BlockTemplates:
+    """The templates of one POU's network shapes (one per generated POU: its scope fixes the codes' forms)."""
+
+    def __init__(self) -> None:
+        self._found: dict[tuple, _Template | None] = {}  # None: a shape that is emitted as usual
+
+    def emit(self, st: Statements, block: ir.Block, own_group: bool) -> None:
+        """``st.statements(block.statements, own_group)``, from the block's template where there is one."""
+        shape = _Shape(st)
+        try:
+            key = (st.src.depth, st.blocks, own_group, shape.statements(block.statements))
+            template = self._found.get(key, False)
+        except (_Unshaped, TypeError):  # (TypeError: an unhashable field)
+            st.statements(block.statements, own_group=own_group)
+            return
+        if isinstance(template, _Template):
+            _fill(st, template, shape)
+        elif template is None:
+            st.statements(block.statements, own_group=own_group)
+        else:  # a new shape: emit it and learn it
+            self._found[key] = _learn(st, block, own_group, shape)
+
+
+def _learn(st: Statements, block: ir.Block, own_group: bool, shape: _Shape) -> _Template | None:
+    """Emit the block as usual; its template, or None when something besides its text and origins changed."""
+    src, module, scope = st.src, st.module, st.scope
+    lines, origins, outer = len(src.lines), len(module.origins), src.origin
+    counts = (len(module.diagnostics), len(module.bound), scope._temps, len(st.outlines.lines))
+    temps, pages = scope.temps_used, scope.pages_used
+    scope.temps_used, scope.pages_used = set(), set()
+    try:
+        st.statements(block.statements, own_group=own_group)
+    finally:
+        used_temps, used_pages = scope.temps_used, scope.pages_used
+        temps |= used_temps
+        pages |= used_pages
+        scope.temps_used, scope.pages_used = temps, pages
+    if counts != (len(module.diagnostics), len(module.bound), scope._temps, len(st.outlines.lines)):
+        return None
+    held = st._output_line  # an inlined FB's output store that a following statement may chain onto
+    if held is not None and held[0] is src and held[1] == len(src.lines) - 1:  # (Statements._chained): the last line
+        return None
+    position = {id(s): i for i, s in enumerate(shape.walked)}
+    statements = []
+    for s, origin in zip(module.origin_statements[origins:], module.origins[origins:]):
+        found = position.get(id(s))
+        if found is None or origin is not shape.walked[found].origin:
+            return None
+        statements.append(found)
+    line_origins = []
+    for oid in src.line_origins[lines:]:
+        if oid is not None and oid >= origins:
+            line_origins.append(oid - origins)
+        elif oid == outer:
+            line_origins.append(-1)
+        else:
+            return None
+    template = _holes(src.lines[lines:], shape)
+    if template is None:
+        return None
+    return _Template(template, line_origins, statements, frozenset(used_temps), frozenset(used_pages))
+
+
+def _holes(lines: list[str], shape: _Shape) -> list[tuple[str | int, ...]] | None:
+    """``lines`` with each variable's code a hole (its index); None when a code of no variable of the block, or a
+    variable's name outside its code (a message naming it), is in them."""
+    codes = shape.codes
+    names = {part for code in codes for part in (code.partition(".v_")[2], code.partition(".")[2])}
+    template = []
+    for line in lines:
+        parts: list[str | int] = []
+        for i, piece in enumerate(_CODES.split(line)):
+            if i % 2:  # a code
+                found = codes.get(piece)
+                if found is None:
+                    return None
+                parts.append(found)
+            elif any(word.upper() in names for word in _WORD.findall(piece)):
+                return None
+            else:
+                parts.append(piece)
+        template.append(tuple(parts))
+    return template
+
+
+def _fill(st: Statements, template: _Template, shape: _Shape) -> None:
+    """The template's lines with this block's variables, its statements' origins registered in order."""
+    src, module, scope = st.src, st.module, st.scope
+    codes = list(shape.codes)
+    outer = src.origin
+    for parts in template.lines:
+        src.lines.append("".join(part if isinstance(part, str) else codes[part] for part in parts))
+    walked = shape.walked
+    oids = [module.origin(walked[i].origin, walked[i]) for i in template.statements]
+    src.line_origins.extend(outer if k < 0 else oids[k] for k in template.origins)
+    scope.temps_used |= template.temps
+    scope.pages_used |= template.pages
+    st._output_line = None  # (as its shape's first network left it: ``_learn``)
+
+
+class _Shape:
+    """A block's shape (``statements``), the codes of its variables by first appearance, and its statements in
+    ``mentions.walk``'s order. Types and members stand in it by identity (``id``: the IR is alive meanwhile): an
+    equal type that is another object only makes another shape."""
+
+    def __init__(self, st: Statements) -> None:
+        self.place = st.scope.placed
+        self.dead, self.folds = st.dead, st.folds
+        self.codes: dict[str, int] = {}
+        self.walked: list[ir.Stmt] = []
+
+    def statements(self, statements: list[ir.Stmt]) -> tuple:
+        return tuple([self.statement(s) for s in statements])
+
+    def statement(self, s: Any) -> tuple:
+        self.walked.append(s)
+        kind = type(s)
+        if kind is ir.Probe:  # (the fast variant records none)
+            return _PROBE
+        if kind is ir.Assign:
+            if id(s) in self.dead:  # left out (liveness.py): its variables are not read
+                return _DEAD
+            return (self.folds.get(id(s)), self.var(s.target), self.value(s.value))
+        if kind is ir.If:
+            branches = tuple([(self.value(cond), self.statements(body)) for cond, body in s.branches])
+            return (kind, branches, self.statements(s.orelse))
+        value = self.value
+        if kind is ir.FbCall:
+            inputs = tuple([(pin, value(e)) for pin, e in s.inputs])
+            outputs = tuple([(pin, self.var(v)) for pin, v in s.outputs])
+            return (kind, id(s) in self.dead, self.var(s.instance), inputs, outputs, value(s.en), value(s.eno), s.body)
+        if kind is ir.FnCall:
+            return (kind, id(s) in self.dead, value(s.call), value(s.target), value(s.en), value(s.eno))
+        raise _Unshaped
+
+    def value(self, value: Any) -> Any:
+        kind = type(value)
+        if kind is ir.Var:
+            return self.var(value)
+        if kind is ir.Binary:
+            return (value.op, self.value(value.left), self.value(value.right), id(value.type))
+        if kind is ir.Unary:
+            return (kind, value.op, self.value(value.operand), id(value.type))
+        if kind is ir.Const:
+            return (kind, self.value(value.value), id(value.type))
+        if kind is str or value is None:
+            return value
+        if kind is int or kind is bool or kind is float:
+            return (kind, value)  # (1, 1.0 and True are equal keys, not equal code)
+        if kind is tuple or kind is list:
+            return tuple([self.value(v) for v in value])
+        if kind is ir.Member or kind is ir.Deref:
+            return value
+        if kind is ir.Origin:
+            raise _Unshaped
+        if kind.__module__ == ir.__name__:  # another expression, or an index
+            return (kind, *[self.value(v) for v in node_fields(value).values()])
+        return id(value)  # a type
+
+    def var(self, var: ir.Var) -> tuple:
+        code, ty, page = self.place(var)
+        if page or code.startswith("self.v_"):  # a slot of this POU (on page ``page``: ``ll_p2.v_X``)
+            if code.startswith("v_w", code.find(".") + 1):  # an escaped name (names.escape): not the IEC name
+                raise _Unshaped
+            held: Any = (page, self.codes.setdefault(code, len(self.codes)))
+        elif code.startswith("ll_t_"):  # a temporary's local: the same in every network
+            held = code
+        else:  # a global, an in-out, a located variable ...
+            raise _Unshaped
+        return (id(var.type), self.value(var.path) if var.path else (), id(ty), held)

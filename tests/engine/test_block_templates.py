@@ -1,0 +1,139 @@
+"""Networks of one shape filled in from a template (codegen/templates.py, issue 27) give the very module, line origins
+and origins that emitting every network on its own gives, in the fast variant and in the monitor variant's unviewed
+twins: the same code, the same fault locations.
+
+The diagrams mix shapes whose variables are the same or different (``A AND A`` folds to ``A``), of other types
+(INT compares, an ADD box), FB boxes, set/reset and edge coils, globals, and enough variables that later ones live
+on a page of their own (``ll_p1.v_X``); the plain emission is what ``Statements`` does without the templates.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import os
+
+import pytest
+from benchmarks.diagrams import project as benchmark_project
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from ladderlab.engine.codegen import generate, templates
+from ladderlab.engine.codegen.layout import PAGE_SIZE
+from ladderlab.ir import nodes as ir
+from ladderlab.ir.lower_project import lower_project
+from ladderlab.model import ld
+from ladderlab.model.project import Pou, Project, Task
+
+BOOLS = [f"B{i}" for i in range(4)]
+
+
+def _plain(self: templates.BlockTemplates, st_: object, block: object, own_group: bool) -> None:
+    st_.statements(block.statements, own_group=own_group)  # type: ignore[attr-defined]
+
+
+def _both(project: Project, variant: str = "fast") -> None:
+    lowered = lower_project(project)
+    assert lowered.program is not None, [d.format() for d in lowered.diagnostics]
+    filled = generate(lowered.program, variant)
+    with pytest.MonkeyPatch.context() as patched:
+        patched.setattr(templates.BlockTemplates, "emit", _plain)
+        plain = generate(lowered.program, variant)
+    assert filled.source == plain.source
+    assert filled.line_origins == plain.line_origins
+    assert filled.origins == plain.origins
+    assert [id(s) for s in filled.origin_statements] == [id(s) for s in plain.origin_statements]
+    assert [d.format() for d in filled.diagnostics] == [d.format() for d in plain.diagnostics]
+
+
+element = st.one_of(
+    st.tuples(st.just("contact"), st.sampled_from(BOOLS + ["G1", "P0", "P1"]), st.sampled_from(["no", "nc", "p"])),
+    st.tuples(st.just("coil"), st.sampled_from(BOOLS + ["G1", "P1"]), st.sampled_from(["normal", "set", "reset", "n"])),
+    st.tuples(st.just("compare"), st.sampled_from(["I0", "I1", "5"]), st.sampled_from(["I0", "I1", "7"])),
+    st.tuples(st.just("ton"), st.sampled_from(["T0", "T1"]), st.sampled_from(["T#5ms", "T#1s"])),
+    st.tuples(st.just("add"), st.sampled_from(["I0", "I1"]), st.sampled_from(["I0", "I1", "1"])),
+)
+
+
+def _element(n: int, k: int, spec: tuple[str, str, str]) -> ld.LdElement:
+    kind, a, b = spec
+    ident = f"e{n}_{k}"
+    if kind == "contact":
+        return ld.Contact(id=ident, var=a, mode=b)  # type: ignore[arg-type]
+    if kind == "coil":
+        return ld.Coil(id=ident, var=a, mode=b)  # type: ignore[arg-type]
+    if kind == "compare":
+        return ld.Compare(id=ident, op="LT", left=a, right=b)
+    if kind == "ton":
+        return ld.Box(id=ident, call="TON", instance=a, inputs={"PT": b})
+    return ld.Box(id=ident, call="ADD", en=True, inputs={"IN1": a, "IN2": b}, outputs={"OUT": a})
+
+
+def _project(networks: list[list[tuple[str, str, str]]]) -> Project:
+    filler = " ".join(f"F{i}," for i in range(PAGE_SIZE))  # P0 and P1 on the second page of slots
+    declarations = (
+        f"VAR\n  {', '.join(BOOLS)} : BOOL; I0, I1 : INT; T0, T1 : TON;\n  {filler} P0, P1 : BOOL;\nEND_VAR\n"
+        "VAR_EXTERNAL G1 : BOOL; END_VAR"
+    )
+    body = ld.LdBody(
+        networks=[
+            ld.LdNetwork(id=f"n{n}", elements=[_element(n, k, spec) for k, spec in enumerate(elements)])
+            for n, elements in enumerate(networks)
+        ]
+    )
+    main = Pou(name="Main", kind="program", language="ld", declarations=declarations, body=body)
+    return Project(
+        name="shapes",
+        pous=[main],
+        globals="VAR_GLOBAL G1 : BOOL; END_VAR",
+        tasks=[Task(name="main", interval="T#10ms", programs=["Main"])],
+    )
+
+
+@settings(max_examples=int(os.environ.get("TEMPLATE_EXAMPLES", "25")), deadline=None)
+@given(shapes=st.lists(st.lists(element, min_size=1, max_size=4), min_size=2, max_size=6), repeats=st.integers(2, 12))
+def test_networks_of_repeated_shapes_give_the_plain_emission(
+    shapes: list[list[tuple[str, str, str]]], repeats: int
+) -> None:
+    networks = [shapes[i % len(shapes)] for i in range(repeats * len(shapes))]
+    _both(_project(networks))
+    _both(_project(networks), "monitor")  # (its unviewed twins: the chunks that record no probe)
+
+
+@pytest.mark.parametrize("language", ["ld", "fbd"])
+@pytest.mark.parametrize("timed", [1, 4])
+@pytest.mark.parametrize("variant", ["fast", "monitor"])
+def test_the_benchmark_diagrams_give_the_plain_emission(language: str, timed: int, variant: str) -> None:
+    _both(benchmark_project(language, 400, timed), variant)
+
+
+def test_only_code_without_probes_is_filled_in(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The debug variant has no templates; the monitor variant fills in only its unviewed twins."""
+    lowered = lower_project(benchmark_project("ld", 20))
+    assert lowered.program is not None
+    calls: list[bool] = []
+    monkeypatch.setattr(
+        templates.BlockTemplates,
+        "emit",
+        lambda self, st_, block, own: (calls.append(st_.probes is None), _plain(self, st_, block, own)),
+    )
+    generate(lowered.program, "debug")
+    assert calls == []
+    generate(lowered.program, "monitor")
+    assert calls and all(calls)
+
+
+def test_the_shape_models_every_field_of_the_statements_it_fills() -> None:
+    """templates._Shape lists the fields of these statements one by one: a field added to one of them must be added
+    to its shape (or two networks differing in it would share code)."""
+    modelled = {
+        ir.Assign: ["target", "value", "origin"],
+        ir.If: ["branches", "orelse", "origin"],
+        ir.FbCall: ["instance", "inputs", "outputs", "origin", "en", "eno", "body"],
+        ir.FnCall: ["call", "target", "origin", "en", "eno"],
+        ir.Probe: ["element", "value", "origin", "kind"],  # (none recorded in the fast variant)
+        ir.Var: ["scope", "name", "type", "path"],  # (scope and name: in the variable's code)
+        ir.Binary: ["op", "left", "right", "type"],
+        ir.Unary: ["op", "operand", "type"],
+        ir.Const: ["value", "type"],
+    }
+    assert {cls: [f.name for f in dataclasses.fields(cls)] for cls in modelled} == modelled
