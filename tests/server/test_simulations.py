@@ -205,12 +205,14 @@ def test_an_unused_simulation_ends_after_the_idle_time_even_running(client: Test
 
 
 def test_requests_keep_a_simulation_alive(client: TestClient, workspace: Workspace) -> None:
-    registry = install(client, SimulationSettings(idle_timeout_s=0.3, reap_every_s=0.02))
+    # requests 0.25 s apart over 2 s keep alive a simulation idle after 1 s (a shorter idle time failed at load 10,
+    # where a request itself may take a good part of it)
+    registry = install(client, SimulationSettings(idle_timeout_s=1.0, reap_every_s=0.02))
     try:
         workspace.create(counter_project())
         sim_id = client.post("/api/projects/counter/simulations").json()["id"]
         for _ in range(8):
-            time.sleep(0.1)
+            time.sleep(0.25)
             assert client.get(f"/api/simulations/{sim_id}").status_code == 200
     finally:
         registry.close()
