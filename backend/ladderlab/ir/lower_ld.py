@@ -285,8 +285,8 @@ class _Rung:
         it; else a slot kept between scans when the box has EN (with EN FALSE it keeps its value), else a
         temporary. (None: the OUT variable was reported.)"""
         if text is None:
-            slot = self.ctx.ir_type(ty)
-            return (self.ctx.hidden(f"{at.element}_OUT", slot) if en else self.ops.temp(slot)), []
+            ir_type = self.ctx.ir_type(ty)
+            return (self.ctx.hidden(f"{at.element}_OUT", ir_type) if en else self.ops.temp(ir_type)), []
         target = self.ops.value_target(text, at.on("OUT"), f"output OUT of {callee.name}", ty)
         if not isinstance(target, ast.Member):
             return target, []
