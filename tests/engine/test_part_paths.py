@@ -84,3 +84,27 @@ def test_a_part_of_a_real_is_no_path() -> None:
     sim = build_project(project).simulation()
     with pytest.raises(ValueError, match=r"^MAIN.R is a REAL: it has no bit or part '%X0'$"):
         sim.location("Main.r.%X0")
+
+
+def test_a_part_of_a_located_variable_reads_and_writes_the_process_image() -> None:
+    """An input word's bit written online reaches the program (the image's world side); a forced bit holds."""
+    text = (
+        "PROGRAM Main\nVAR inw AT %IW0 : WORD; outb AT %QB0 : BYTE; lamp : BOOL; END_VAR\n"
+        "lamp := inw.%X3;\noutb.%X1 := lamp;\nEND_PROGRAM\n"
+    )
+    project, diagnostics = source_to_project(text, "paths")
+    assert project is not None, diagnostics
+    sim = build_project(project).simulation()
+    sim.write("Main.inw.%X3", True)
+    sim.cycle(1)
+    assert [sim.read("Main.inw"), sim.read("Main.lamp"), sim.read("Main.outb"), sim.read("Main.outb.1")] == [
+        0b1000,
+        True,
+        0b10,
+        True,
+    ]
+    sim.force("Main.inw.%X0", True)
+    sim.cycle(1)
+    assert sim.read("Main.inw") == 0b1001
+    with pytest.raises(ValueError, match=r"^MAIN.INW is a WORD in the process image: it has no members$"):
+        sim.location("Main.inw.x")

@@ -345,9 +345,7 @@ class Resolver:
                 member, rest = self._member_name(rest, text)
                 path, ty, keys = self._member(path, ty, keys, member)
                 if isinstance(keys, Location):  # a located variable of an FB or program instance
-                    if rest:
-                        raise ValueError(f"{path} is {_a(ty)} in the process image: it has no members")
-                    return keys
+                    return self._located_part(keys, rest)
             elif (kind, value) == ("punct", "["):
                 indices, rest = self._indices(rest[1:], text)
                 path, ty, keys = self._index(path, ty, keys, indices)
@@ -359,10 +357,17 @@ class Resolver:
                 raise ValueError(f"{text!r} is not a variable path (unexpected {value!r})")
         return Location(path, ty, root, keys)
 
-    def _steps_located(self, text: str, name: str, slot: ir.Slot, rest: list) -> Location:
-        if rest:
-            raise ValueError(f"{name} is {_a(slot.type)} in the process image: it has no members")
-        return located_location(name, slot.type, located_address(slot.address))
+    def _steps_located(self, text: str, name: str, slot: ir.Slot, rest: list[tuple[str, str]]) -> Location:
+        return self._located_part(located_location(name, slot.type, located_address(slot.address)), rest)
+
+    def _located_part(self, location: Location, rest: list[tuple[str, str]]) -> Location:
+        """A located variable, or a bit or part of it (``inputs.%X3``): read from and written to the image."""
+        if not rest:
+            return location
+        if len(rest) != 2 or rest[0] != ("punct", ".") or rest[1][0] not in ("part", "int"):
+            raise ValueError(f"{location.path} is {_a(location.type)} in the process image: it has no members")
+        path, ty, keys = self._part(location.path, location.type, location.keys, rest[1][1])
+        return Location(path, ty, location.root, keys, write_root=location.write_root)
 
     def _indices(self, rest: list, text: str) -> tuple[list[int], list]:
         indices = []
