@@ -1,4 +1,4 @@
-"""Issue 25's values online in Chromium: the ST editor shows an LTIME, an enumeration value, a part (``w.%X3``) and a
+"""Issue 25's values online in Chromium (the trace of a part, triggered by a part, too): the ST editor shows an LTIME, an enumeration value, a part (``w.%X3``) and a
 pointer's own value (the ADR() it holds: ON-11) inline; an LD box writes a part (a MOVE's OUT into ``w.%B0``) and
 a contact on ``w.%X3`` lights up, its badge showing the bit. Expected values follow from the program text: every scan
 sets the same values (IEC 61131-3 ed. 3 6.5.6 numbers parts from the least significant bit; 16#08 is bit 3)."""
@@ -87,3 +87,33 @@ def test_an_ld_box_writes_a_part_and_a_contact_on_it_lights_up(page, server: str
     expect(move.locator('[data-pin-value="out:OUT"] .ld-badge')).to_have_attribute("data-value", "8")  # 16#08
     expect(page.locator('g.ld-element[data-id="lamp"]')).to_have_class(re.compile(r"\bld-on\b"))
     page.screenshot(path=str(ARTIFACTS / "online-issue25-ld.png"))
+
+
+def test_a_part_is_traced_and_triggers_the_trace(page, server: str) -> None:
+    """Trace d and its bit 0, triggered by bit 1 rising: the trace starts where d reaches 2 (mod 4), and bit 0
+    alternates FALSE, TRUE with d even, odd."""
+    main = {
+        "name": "Main",
+        "kind": "program",
+        "language": "st",
+        "declarations": "VAR\n    d : DINT;\nEND_VAR",
+        "body": "d := d + 1;\n",
+    }
+    store_project(server, {"name": "trace25", "pous": [main]})
+    page.goto(server)
+    open_pou(page, "trace25", "Main")
+    go_online(page)
+    page.get_by_role("tab", name="Trace").click()
+    for path in ("Main.d.%X0", "Main.d"):
+        page.get_by_label("Variable to trace").fill(path)
+        page.keyboard.press("Enter")
+    page.get_by_label("Trigger variable").fill("Main.d.%X1")
+    page.get_by_label("Samples to keep").fill("4")
+    page.get_by_role("button", name="Start trace").click()
+    page.get_by_role("status", name="Trace state").filter(has_text="Done · 4 samples").wait_for()
+    page.get_by_label("Table").check()
+    rows = page.get_by_role("table", name="Trace samples").locator("tbody tr")
+    table = rows.evaluate_all("rows => rows.map(r => [...r.children].map(c => c.textContent))")
+    assert [row[2] for row in table] == ["FALSE", "TRUE", "FALSE", "TRUE"]
+    first = int(table[0][3])
+    assert first % 4 == 2 and [int(row[3]) for row in table] == [first, first + 1, first + 2, first + 3]
