@@ -1,7 +1,8 @@
-"""Issue 25's values online in Chromium (the trace of a part, triggered by a part, too): the ST editor shows an LTIME, an enumeration value, a part (``w.%X3``) and a
+"""Issue 25's values online in Chromium: the ST editor shows an LTIME, an enumeration value, a part (``w.%X3``) and a
 pointer's own value (the ADR() it holds: ON-11) inline; an LD box writes a part (a MOVE's OUT into ``w.%B0``) and
-a contact on ``w.%X3`` lights up, its badge showing the bit. Expected values follow from the program text: every scan
-sets the same values (IEC 61131-3 ed. 3 6.5.6 numbers parts from the least significant bit; 16#08 is bit 3)."""
+a contact on ``w.%X3`` lights up, its badge showing the bit; a part is traced and triggers the trace. Expected values
+follow from the program text (IEC 61131-3 ed. 3 6.5.6 numbers parts from the least significant bit; 16#08 is
+bit 3)."""
 
 from __future__ import annotations
 
