@@ -155,14 +155,45 @@ def test_fbd_output_nodes_write_a_bit_or_a_part():
     assert sim.read("Main.d") == put(put(0x11223344, 8, 2, 0xAB), 1, 31, 1)
 
 
-def test_a_box_output_into_a_part_is_still_a_located_error():
+def test_ld_box_outputs_write_a_part_only_when_the_box_runs():
+    """Issue 25: a function box's OUT into a bit or part (``w.%B1``, ``w.%X0``, an integer's ``k.%B0``) writes that part
+    as ST's ``w.%B1 := MOVE(16#AB)`` does, the other bits kept; with EN FALSE the box does not run and the variable
+    keeps its value (LD-08), as with a whole variable at OUT."""
     pou = ld_pou(
         "Main",
-        "VAR w : WORD; run : BOOL := TRUE; END_VAR",
+        "VAR w : WORD := 16#1235; k : INT := -1; run : BOOL := TRUE; END_VAR",
         rung("N1", contact("C1", "run"), box("B1", "MOVE", en=True, IN="16#AB", outputs={"OUT": "w.%B1"})),
+        rung("N2", contact("C2", "run"), box("B2", "GT", en=True, IN1="k", IN2="0", outputs={"OUT": "w.%X0"})),
+        rung("N3", contact("C3", "run"), box("B3", "MOVE", en=True, IN="16#00", outputs={"OUT": "k.%B0"})),
+    )
+    build = build_project(project(pou))
+    assert [d.format() for d in build.diagnostics if d.severity == "error"] == []
+    sim = build.simulation()
+    sim.cycle(1)
+    w = put(put(0x1235, 8, 1, 0xAB), 1, 0, 0)  # -1 > 0 is FALSE
+    k = put(0xFFFF, 8, 0, 0x00) - 0x10000  # INT's two's complement pattern 16#FF00
+    assert [sim.read("Main.w"), sim.read("Main.k")] == [w, k]
+    sim.write("Main.run", False)
+    sim.write("Main.w", 0x1235)
+    sim.write("Main.k", 5)
+    sim.cycle(1)
+    assert [sim.read("Main.w"), sim.read("Main.k")] == [0x1235, 5]  # no box ran: nothing written
+    sim.write("Main.run", True)
+    sim.cycle(1)
+    assert [sim.read("Main.w"), sim.read("Main.k")] == [put(put(0x1235, 8, 1, 0xAB), 1, 0, 1), put(5, 8, 0, 0)]
+
+
+def test_a_box_output_into_a_part_keeps_the_st_type_rules():
+    """The part's type takes the result by ST's assignment rule (ST-23), reported at the box's OUT."""
+    pou = ld_pou(
+        "Main",
+        "VAR w : WORD; r : REAL := 1.5; run : BOOL := TRUE; END_VAR",
+        rung("N1", contact("C1", "run"), box("B1", "MOVE", en=True, IN="r", outputs={"OUT": "w.%B1"})),
+        rung("N2", contact("C2", "run"), box("B2", "MOVE", en=True, IN="16#AB", outputs={"OUT": "w.%B2"})),
     )
     found = [d.format() for d in build_project(project(pou)).diagnostics if d.severity == "error"]
     assert found == [
-        "POU Main, network 1, MOVE.OUT: error LD-BIT-TARGET: output OUT of MOVE cannot write a single bit or part "
-        "('w.%B1') yet: write a variable and copy it into the bit in ST"
+        "POU Main, network 1, MOVE.OUT: error ST-TYPE-MISMATCH: output OUT of MOVE ('w.%B1'): expected BYTE, got REAL "
+        "without a conversion such as REAL_TO_BYTE",
+        "POU Main, network 2, MOVE.OUT: error ST-UNKNOWN-MEMBER: '%B2' is outside a WORD: it has bytes 0..1",
     ]

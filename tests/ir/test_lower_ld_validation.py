@@ -133,11 +133,6 @@ CASES = {
         rung("n1", box("x", "TON", instance="t1", PT=[jump("j", "L")])),
         "POU Main, network 1, jump to L: error LD-CONTROL-POSITION: a jump must be the last element of a branch that ends the rung",
     ),
-    "box output into a part of a variable": (  # a coil on w.3 writes the bit (tests/engine/test_partial_access.py)
-        rung("n1", contact("c", "a"), box("x", "MOVE", en=True, IN="16#AB", outputs={"OUT": "w.%B1"})),
-        "POU Main, network 1, MOVE.OUT: error LD-BIT-TARGET: output OUT of MOVE cannot write a single bit or part "
-        "('w.%B1') yet: write a variable and copy it into the bit in ST",
-    ),
     "parallel with one branch": (
         rung("n1", parallel("p", [contact("c", "a")]), coil("q", "b")),
         "POU Main, network 1, parallel branch: error LD-PARALLEL: the parallel branch has 1 branch(es); it needs at least two",

@@ -1,6 +1,7 @@
 """Variable paths of a running simulation: ``MAIN.T1.Q``, ``GVL.START`` or ``START``, ``MAIN.ARR[3]``, ``MAIN.S.F``,
 ``MAIN.P^`` / ``MAIN.P^.X`` through a pointer or reference (ON-11; a member after a reference steps through it
-too, as CODESYS ``REFERENCE TO`` reads: ``MAIN.R.X``).
+too, as CODESYS ``REFERENCE TO`` reads: ``MAIN.R.X``), a bit or part of an integer or bit string: ``MAIN.W.%X3``
+(also written ``MAIN.W.3``), ``MAIN.D.%B1`` (issue 25, as ST's partial access reads and writes it).
 
 Names are matched case-insensitively against the IR's canonical names; the
 first segment is a VAR_ACCESS name, else ``GVL`` (the globals), else a global:
@@ -17,9 +18,10 @@ from __future__ import annotations
 import re
 from collections.abc import Iterator
 from dataclasses import dataclass
+from typing import Any
 
 from ..iec import values
-from ..iec.addresses import Address, parse_address, same_location
+from ..iec.addresses import PART_NAMES, PARTS, Address, parse_address, part_type, partial_access, same_location
 from ..iec.spelling import did_you_mean
 from ..ir import nodes as ir
 from ..ir import types as t
@@ -35,13 +37,22 @@ from .process_image import ProcessImage, image_view_name, key_of, located_addres
 GLOBALS_PREFIX = "GVL"
 VIEW_PREFIX = "ll_io_"
 _DEREF = object()  # step into a VAR_IN_OUT reference
-_TOKEN = re.compile(r"\s*(?:(?P<name>[A-Za-z_][A-Za-z0-9_]*)|(?P<int>[+-]?\d+)|(?P<punct>[.\[\],^]))")
+_TOKEN = re.compile(
+    r"\s*(?:(?P<name>[A-Za-z_][A-Za-z0-9_]*)|(?P<int>[+-]?\d+)|(?P<part>%[XBWDL]\d+)|(?P<punct>[.\[\],^]))",
+    re.IGNORECASE,
+)
 
 
 #: Why no path reaches a FUNCTION's or METHOD's variables (CODESYS shows them only in a halted call, too).
 _ONE_CALL = (
     "its variables live for one call only, so no path names them; they are shown while a scan is halted in it "
     "(the call stack, and inline in its editor)"
+)
+
+#: Why no path reaches a PROPERTY: reading one runs its GET, code that may change variables (issue 25).
+_ACCESSOR = (
+    "its value is what its GET returns when the program calls it, and watching or tracing never runs code that may "
+    "change variables; watch or trace the variables its GET reads"
 )
 
 
@@ -71,6 +82,37 @@ def _target(ref: object, step: _Pointee) -> tuple[object, object]:
         return ref.pair  # type: ignore[attr-defined, no-any-return]  # a Ref (engine/codegen/runtime.py)
     except PlcRuntimeError as error:  # a moved pointer beyond its array
         raise NoTarget(f"{step.pointer}^: {error.message}") from None
+
+
+@dataclass(frozen=True)
+class _Part:
+    """A key that picks ``width`` bits from bit ``shift`` of the integer or bit string before it (``w.%X3``); an
+    integer's parts are those of its two's complement pattern, ``bits`` wide (``signed``: wrapped back on a write)."""
+
+    width: int
+    shift: int
+    bits: int
+    signed: bool
+
+
+class _Bits:
+    """The variable at ``container[key]`` as the container of its parts: reading one reads the variable's bits,
+    writing one writes the variable's new pattern (the other bits kept), as ST's ``w.%X3 := b`` does."""
+
+    def __init__(self, container: Any, key: object) -> None:  # Any: an instance, a structure, a list or a view
+        self.container, self.key = container, key
+
+    def __getitem__(self, part: _Part) -> object:
+        value = (self.container[self.key] >> part.shift) & ((1 << part.width) - 1)
+        return bool(value) if part.width == 1 else value
+
+    def __setitem__(self, part: _Part, value: object) -> None:
+        mask = ((1 << part.width) - 1) << part.shift
+        old = self.container[self.key]
+        pattern = ((old & ~mask) | (int(value) << part.shift)) & ((1 << part.bits) - 1)  # type: ignore[call-overload]  # a BOOL or an integer: coerce_for checked it
+        if part.signed and pattern >> (part.bits - 1):
+            pattern -= 1 << part.bits
+        self.container[self.key] = pattern
 
 
 def _step(obj: object, key: object) -> object:
@@ -103,16 +145,7 @@ class Location:
         return any(isinstance(key, _Pointee) for key in self.keys)
 
     def _container(self, roots: Roots, writing: bool = False) -> tuple[object, object]:
-        obj = roots.get(self.write_root if writing and self.write_root is not None else self.root)
-        keys = list(self.keys)
-        last = keys.pop()
-        for key in keys:
-            obj = _step(obj, key)
-        if last is _DEREF:
-            return obj  # type: ignore[return-value]  # the reference itself is (container, key)
-        if isinstance(last, _Pointee):
-            return _target(obj, last)
-        return obj, last
+        return _pair(roots.get(self.write_root if writing and self.write_root is not None else self.root), self.keys)
 
     def get(self, roots: Roots) -> object:
         container, key = self._container(roots)
@@ -143,6 +176,20 @@ class Location:
     def reference(self, roots: Roots) -> tuple[object, object]:
         """A VAR_IN_OUT reference ``(container, key)`` to this location, as generated code passes one."""
         return self._container(roots)
+
+
+def _pair(obj: object, keys: tuple[object, ...]) -> tuple[object, object]:
+    """The ``(container, key)`` that ``keys`` reach from ``obj``; a part's container is its variable's bits."""
+    *steps, last = keys
+    if isinstance(last, _Part):
+        return _Bits(*_pair(obj, tuple(steps))), last
+    for key in steps:
+        obj = _step(obj, key)
+    if last is _DEREF:
+        return obj  # type: ignore[return-value]  # the reference itself is (container, key)
+    if isinstance(last, _Pointee):
+        return _target(obj, last)
+    return obj, last
 
 
 class Roots:
@@ -298,13 +345,14 @@ class Resolver:
             kind, value = rest[0]
             if isinstance(ty, t.Reference) and (kind, value) == ("punct", "."):
                 ty, keys = ty.target, (*keys, _Pointee(path))  # CODESYS REFERENCE TO: r.x reads through r
-            if (kind, value) == ("punct", "."):
+            if (kind, value) == ("punct", ".") and len(rest) > 1 and rest[1][0] in ("part", "int"):
+                path, ty, keys = self._part(path, ty, keys, rest[1][1])
+                rest = rest[2:]
+            elif (kind, value) == ("punct", "."):
                 member, rest = self._member_name(rest, text)
                 path, ty, keys = self._member(path, ty, keys, member)
                 if isinstance(keys, Location):  # a located variable of an FB or program instance
-                    if rest:
-                        raise ValueError(f"{path} is {_a(ty)} in the process image: it has no members")
-                    return keys
+                    return self._located_part(keys, rest)
             elif (kind, value) == ("punct", "["):
                 indices, rest = self._indices(rest[1:], text)
                 path, ty, keys = self._index(path, ty, keys, indices)
@@ -316,10 +364,17 @@ class Resolver:
                 raise ValueError(f"{text!r} is not a variable path (unexpected {value!r})")
         return Location(path, ty, root, keys)
 
-    def _steps_located(self, text: str, name: str, slot: ir.Slot, rest: list) -> Location:
-        if rest:
-            raise ValueError(f"{name} is {_a(slot.type)} in the process image: it has no members")
-        return located_location(name, slot.type, located_address(slot.address))
+    def _steps_located(self, text: str, name: str, slot: ir.Slot, rest: list[tuple[str, str]]) -> Location:
+        return self._located_part(located_location(name, slot.type, located_address(slot.address)), rest)
+
+    def _located_part(self, location: Location, rest: list[tuple[str, str]]) -> Location:
+        """A located variable, or a bit or part of it (``inputs.%X3``): read from and written to the image."""
+        if not rest:
+            return location
+        if len(rest) != 2 or rest[0] != ("punct", ".") or rest[1][0] not in ("part", "int"):
+            raise ValueError(f"{location.path} is {_a(location.type)} in the process image: it has no members")
+        path, ty, keys = self._part(location.path, location.type, location.keys, rest[1][1])
+        return Location(path, ty, location.root, keys, write_root=location.write_root)
 
     def _indices(self, rest: list, text: str) -> tuple[list[int], list]:
         indices = []
@@ -346,6 +401,11 @@ class Resolver:
                     return location.path, location.type, location
                 if inner is None and f"{user.name}.{member}".upper() in self.context.pous:
                     raise UnknownPath(f"{path}.{member} is a METHOD of {user.name}: {_ONE_CALL}")
+                if (
+                    inner is None
+                    and {f"{user.name}.{member}.{a}".upper() for a in ("GET", "SET")} & self.context.pous.keys()
+                ):
+                    raise UnknownPath(f"{path}.{member} is a PROPERTY of {user.name}: {_ACCESSOR}")
                 if inner is None:
                     what = path if path.upper() == ty.fb.upper() else f"{path} ({ty.fb})"  # a program instance: MAIN
                     raise UnknownPath(f"{what} has no variable {member!r}{did_you_mean(member, _visible(layout))}")
@@ -364,6 +424,25 @@ class Resolver:
             fields = [f.name for f in ty.fields]
             raise UnknownPath(f"{path} ({ty.name}) has no field {member!r}{did_you_mean(member, fields)}")
         raise ValueError(f"{path} is {_a(ty)}: it has no member {member!r}")
+
+    def _part(
+        self, path: str, ty: t.IrType, keys: tuple[object, ...], member: str
+    ) -> tuple[str, t.IrType, tuple[object, ...]]:
+        """``.%X3``, ``.3``, ``.%B1`` of an integer or bit string (the ST checker's rule and numbering)."""
+        width, index = partial_access(member) or (0, 0)
+        info = ty.info if isinstance(ty, t.Elementary) else None
+        if info is None or info.category not in ("bits", "int") or width == 0:
+            raise ValueError(f"{path} is {_a(ty)}: it has no bit or part {member!r}")
+        if index >= info.bits // width:
+            what, count = PART_NAMES[width], info.bits // width
+            raise ValueError(
+                f"{path}.{member} is outside {path}, a {ty.name}: it has {what} 0..{count - 1}"
+                if count
+                else f"{path}.{member}: a {ty.name} has no {what}, it is {info.bits} bits wide"
+            )
+        letter = next(name for name, (bits, _) in PARTS.items() if bits == width)
+        part = _Part(width, index * width, info.bits, info.signed)
+        return f"{path}.%{letter}{index}", t.Elementary(part_type(width)), (*keys, part)
 
     def _index(self, path, ty, keys, indices):
         if not isinstance(ty, t.Array):

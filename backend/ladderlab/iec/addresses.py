@@ -126,6 +126,8 @@ def same_location(text: str | None, address: Address) -> bool:
 #: Partial access (IEC 61131-3 ed. 3, 6.5.6): ``w.%X3`` a bit, ``.%B1`` a byte, ``.%W0`` a word, ``.%D1`` a double
 #: word, ``.%L0`` a long word of an ANY_BIT variable, numbered from the least significant; the type of each part.
 PARTS = {"X": (1, "BOOL"), "B": (8, "BYTE"), "W": (16, "WORD"), "D": (32, "DWORD"), "L": (64, "LWORD")}
+#: How messages name the parts of each width.
+PART_NAMES = {1: "bits", 8: "bytes", 16: "words", 32: "double words", 64: "long words"}
 _PART = re.compile(r"%([XBWDL])(\d+)\Z", re.IGNORECASE)
 
 

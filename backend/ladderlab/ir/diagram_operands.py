@@ -335,9 +335,9 @@ class Operands:
             return None
         return value
 
-    def target(self, text: str, at: At, what: str, parts: bool = False) -> tuple[Var | ast.Member | None, t.Type]:
-        """A written operand (coil, output node, box output): a variable that may be assigned; with ``parts``
-        also a bit or part of one (``w.3``, ``w.%X3``), returned as its checked AST for ``store``.
+    def target(self, text: str, at: At, what: str) -> tuple[Var | ast.Member | None, t.Type]:
+        """A written operand (coil, output node, box output): a variable that may be assigned, or a bit or part of
+        one (``w.3``, ``w.%X3``, ``w.%B1``), returned as its checked AST for ``store``.
 
         The checker's verdict on writing a plain variable name depends only on the variable's type, class and
         constness; once one such variable was written without a word, alike ones are not checked again (some
@@ -359,15 +359,7 @@ class Operands:
         if ty is t.ERROR or self.errors_since(before):
             return None, t.ERROR
         if isinstance(node, ast.Member) and partial_access(node.name) is not None:
-            if parts:
-                return node, ty
-            self.report(  # only an LD box's output gets here: coils and FBD output nodes take parts
-                at,
-                "LD-BIT-TARGET",
-                f"{what} cannot write a single bit or part ('{text.strip()}') yet: "
-                "write a variable and copy it into the bit in ST",
-            )
-            return None, t.ERROR
+            return node, ty
         if kind is not None and len(self.ctx.diagnostics) == before:
             self._clean_targets.add(kind)
         return self.access(node, at), ty
@@ -375,7 +367,7 @@ class Operands:
     def bool_target(self, text: str, at: At, what: str) -> Store | None:
         """A coil's or BOOL output node's operand: a BOOL variable or a bit of one (``w.3``, ``w.%X3``), as the
         store of a value."""
-        var, ty = self.target(text, at, what, parts=True)
+        var, ty = self.target(text, at, what)
         if var is not None and not t.same(ty, t.BOOL):
             self.report(at, f"{self.lang}-NOT-BOOL", f"{what} needs a BOOL variable; '{text.strip()}' is {ty}")
             return None
@@ -388,10 +380,10 @@ class Operands:
             return lambda value, origin: Assign(target, value, origin)
         return lambda value, origin: Assign(*assign_part(target, value, self.ctx), origin)
 
-    def value_target(self, text: str, at: At, what: str, value: t.Type) -> Var | None:
-        """A written operand that receives a ``value``-typed result (output node, box output pin)."""
+    def value_target(self, text: str, at: At, what: str, value: t.Type) -> Var | ast.Member | None:
+        """A written operand that receives a ``value``-typed result (a box output pin): a variable, or a bit or
+        part of one as its checked AST for ``store``."""
         var, ty = self.target(text, at, what)
-        assert not isinstance(var, ast.Member)  # parts only when asked for
         return var if var is not None and self.assignable(ty, value, at, f"{what} ('{text.strip()}')") else None
 
     def assignable(self, target: t.Type, value: t.Type, at: At, what: str) -> bool:

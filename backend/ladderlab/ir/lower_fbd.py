@@ -323,7 +323,7 @@ class _Network:
             return
         what = "the output"
         if node.mode == "normal":
-            target, target_type = self.ops.target(node.var, at.on(None), what, parts=True)
+            target, target_type = self.ops.target(node.var, at.on(None), what)
             if target is None:
                 return
             expr, ty = self.expr(value, at, what, target_type)

@@ -14,11 +14,13 @@ from __future__ import annotations
 from ..model import ld
 from ..model.places import Places
 from ..model.project import Pou as ModelPou
+from ..st import ast
 from ..st import types as t
 from .context import PouContext
 from .diagram_calls import Callee, check_call, lower_call, resolve_callee
 from .diagram_checks import canonical_label, check_jump_target, check_labels, check_unique_ids, check_unique_networks
 from .diagram_operands import At, Operands
+from .lower_expr import convert
 from .lower_st import fb_output, fb_pins
 from .nodes import Assign, Block, Expr, If, Jump, Origin, Probe, Return, Stmt, Var, diagram_origin
 from .power import FALSE, TRUE, and_, coil, edge, not_, or_
@@ -207,13 +209,13 @@ class _Rung:
         )
         if call is None:
             return None
-        result = None if callee.is_fb else self._result(callee, call.ty, result_text, at, box.en)
+        result, copies = (None, []) if callee.is_fb else self._result(callee, call.ty, result_text, at, en, origin)
         statements = (
             lower_call(self.ops, callee, call, result, at, origin) if result is not None or callee.is_fb else None
         )
         if statements is None:
             return None
-        self.out += statements
+        self.out += statements + copies
         if callee.is_fb:  # the outputs, read from the instance the FbCall (first statement) called
             types = fb_pins(call.fb, self.ctx)
             pins = {pin: fb_output(statements[0].instance, pin, types[pin][0]) for pin in callee.output_names()}
@@ -274,14 +276,23 @@ class _Rung:
         inputs[free[0]] = (power, t.BOOL)
         return True
 
-    def _result(self, callee: Callee, ty: t.Type, text: str | None, at: At, en: bool) -> Var | None:
-        """Where a function box's result (of type ``ty``) goes: its OUT variable, else a slot kept between scans
-        when the box has EN (with EN FALSE it keeps its value), else a temporary."""
-        if text is not None:
-            return self.ops.value_target(text, at.on("OUT"), f"output OUT of {callee.name}", ty)
-        if en:
-            return self.ctx.hidden(f"{at.element}_OUT", self.ctx.ir_type(ty))
-        return self.ops.temp(self.ctx.ir_type(ty))
+    def _result(
+        self, callee: Callee, ty: t.Type, text: str | None, at: At, en: tuple[Expr, t.Type] | None, origin: Origin
+    ) -> tuple[Var | None, list[Stmt]]:
+        """Where a function box's result (of type ``ty``) goes, and the statements that copy it on: its OUT
+        variable; a bit or part of one (``w.%B1``): a temporary, copied into the part after the call (with EN,
+        only when the box ran: the variable keeps its value with EN FALSE), as ST's ``w.%B1 := F(...)`` stores
+        it; else a slot kept between scans when the box has EN (with EN FALSE it keeps its value), else a
+        temporary. (None: the OUT variable was reported.)"""
+        if text is None:
+            ir_type = self.ctx.ir_type(ty)
+            return (self.ctx.hidden(f"{at.element}_OUT", ir_type) if en else self.ops.temp(ir_type)), []
+        target = self.ops.value_target(text, at.on("OUT"), f"output OUT of {callee.name}", ty)
+        if not isinstance(target, ast.Member):
+            return target, []
+        slot = self.ops.temp(self.ctx.ir_type(ty))
+        copy = self.ops.store(target)(convert(slot, self.ctx.ir_type(target.ty)), origin)
+        return slot, [copy] if en is None else [If([(en[0], [copy])], [], origin)]
 
     def _bool_output(self, callee: Callee, ty: t.Type, pins: dict[str, Expr | None], at: At) -> Expr | None:
         if callee.is_fb:

@@ -147,7 +147,6 @@ _TABLE: list[tuple[str, str, Severity, str]] = [
     ("diagram", "DUPLICATE-ID", "error", "Two networks or elements of a POU have the same id."),
     # ladder diagram (ir/lower_ld.py)
     ("ld", "LD-PARALLEL", "error", "A parallel branch has fewer than two branches."),
-    ("ld", "LD-BIT-TARGET", "error", "A box output writes a single bit or part of a variable."),
     ("ld", "LD-CONTROL-POSITION", "error", "A jump or return is not at the end of a branch that ends the rung."),
     ("ld", "LD-UNKNOWN-PIN", "error", "A box pin is connected that the box does not have."),
     ("ld", "LD-BOX-POWER", "error", "A box without EN/ENO cannot pass the rung's power flow."),

@@ -11,7 +11,7 @@ from collections.abc import Callable
 from typing import Any
 
 from ..iec import stdlib
-from ..iec.addresses import parse_address, part_type, partial_access, same_location
+from ..iec.addresses import PART_NAMES, parse_address, part_type, partial_access, same_location
 from ..iec.elementary import LONG_TIME_TYPES, SHORT_TO_LONG
 from ..iec.spelling import did_you_mean
 from . import ast
@@ -27,8 +27,6 @@ from .symbols import CheckResult, PouInfo, PropertyRef, Symbol, TypeDef
 from .types import ERROR, Type
 
 _ACCESSES = (ast.Name, ast.Member, ast.Index)
-_PART_NAMES = {1: "bits", 8: "bytes", 16: "words", 32: "double words", 64: "long words"}
-
 Report = Callable[..., None]  # report(code, message, node, severity="error")
 
 _ARITHMETIC = {"+", "-", "*", "/"}
@@ -266,7 +264,7 @@ class BodyChecker:
         ed. 3, 6.5.6; on integers too, as CODESYS allows), numbered from the least significant part."""
         bits = base.info.bits
         if index >= bits // width:
-            what = _PART_NAMES[width]
+            what = PART_NAMES[width]
             self.report(
                 "ST-UNKNOWN-MEMBER",
                 f"'{node.name}' is outside a {base}: it has {what} 0..{bits // width - 1}"

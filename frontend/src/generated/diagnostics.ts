@@ -638,16 +638,6 @@ export const DIAGNOSTICS = {
       summary:
         "A network or CFC label is not an identifier or an unsigned integer, or FBD has a label element.",
     },
-    "LD-BIT-TARGET": {
-      anchor: "ld-bit-target",
-      area: "ld",
-      example: "a MOVE box whose OUT pin writes Status.%B1 (byte 1 of a WORD)",
-      example_language: "text",
-      example_note: "(Coils and output nodes write bits and parts: a coil on `Status.3`.)",
-      fix: "write a variable of the part's type and copy it into the part in ST (`Status.%B1 := Value;`).",
-      severity: "error",
-      summary: "A box output writes a single bit or part of a variable.",
-    },
     "LD-BOX-POWER": {
       anchor: "ld-box-power",
       area: "ld",

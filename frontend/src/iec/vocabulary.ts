@@ -7,6 +7,14 @@ import { IEC } from "../generated/iec";
 /** The elementary types in the backend's order (BOOL, SINT ... STRING). */
 export const ELEMENTARY: readonly string[] = IEC.elementary.map((e) => e.name);
 
+/** The width in bits of an integer or bit string type (BYTE 8, INT 16 ...), whose bits and parts ST selects
+ * (`w.%X3`, `d.%B1`); null for any other type. */
+export function partBits(type: string): number | null {
+  const name = type.trim().toUpperCase();
+  const found = IEC.elementary.find((e) => e.name === name && (e.category === "int" || e.category === "bits"));
+  return found ? found.bits : null;
+}
+
 /** Every type name a declaration may use without defining it: the elementary types and WSTRING. */
 export const DECLARABLE_TYPES: readonly string[] = [...new Set([...ELEMENTARY, ...IEC.strings])];
 

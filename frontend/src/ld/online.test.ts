@@ -27,6 +27,9 @@ describe("operand paths of the online LD", () => {
     expect(operandPath(" T1.Q ", "MAIN", SYMBOLS)).toBe("MAIN.T1.Q");
     expect(operandPath("Alarm", "MAIN", SYMBOLS)).toBe("ALARM");
     expect(operandPath("arr[3]", "MAIN.FB1", SYMBOLS)).toBe("MAIN.FB1.ARR[3]");
+    expect(operandPath("w.%x3", "MAIN", SYMBOLS)).toBe("MAIN.W.%X3"); // a bit or part (issue 25)
+    expect(operandPath("w.3", "MAIN", SYMBOLS)).toBe("MAIN.W.%X3");
+    expect(operandPath("arr[2].%B1", "MAIN", SYMBOLS)).toBe("MAIN.ARR[2].%B1");
   });
 
   it("has no path for literals, addresses and empty operands", () => {

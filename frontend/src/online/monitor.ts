@@ -226,13 +226,13 @@ export function keepSubscribed(
 export const powerKey = (instance: string, id: string): string => `${instance}/${id}`;
 
 /** A variable operand: names with member/index access (`T1.Q`, `A[3]`); literals and addresses are not. */
-const VARIABLE = /^[A-Za-z_][A-Za-z0-9_]*(\.[A-Za-z_][A-Za-z0-9_]*|\[\s*\d+\s*\])*$/;
+const VARIABLE = /^[A-Za-z_][A-Za-z0-9_]*(\.[A-Za-z_][A-Za-z0-9_]*|\[\s*\d+\s*\])*(\.%[XBWDL]\d+|\.\d+)?$/i;
 const LITERALS = new Set(["TRUE", "FALSE"]);
 
 /**
  * The canonical simulation path of an operand in POU instance `instance`, as the server names it
- * in its messages: the instance's own variable (`MAIN.START`) or a global (`ALARM`); null for
- * literals and addresses.
+ * in its messages: the instance's own variable (`MAIN.START`) or a global (`ALARM`), a bit or part of one
+ * too (`w.3` and `w.%X3` are `MAIN.W.%X3`, issue 25); null for literals and addresses.
  */
 export function operandPath(operand: string, instance: string, symbols: readonly SymbolInfo[]): string | null {
   const text = operand.trim();
@@ -241,5 +241,6 @@ export function operandPath(operand: string, instance: string, symbols: readonly
   const symbol = symbols.find((s) => s.name.toUpperCase() === head);
   const global =
     symbol?.var_class === "VAR_GLOBAL" || symbol?.var_class === "VAR_EXTERNAL" || (!symbol && listNames().has(head));
-  return pathKey(global ? text : `${instance}.${text}`);
+  const path = text.replace(/\.(\d+)$/, ".%X$1"); // the server names a bit by its long form
+  return pathKey(global ? path : `${instance}.${path}`);
 }

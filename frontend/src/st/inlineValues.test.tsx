@@ -174,6 +174,58 @@ describe("array elements inline (ON-12: a[i] shows its value, a[i + 1] none)", (
   });
 });
 
+describe("pointers and parts inline (ON-11, issue 25)", () => {
+  const withParts: Scope = {
+    ...scope,
+    symbols: [
+      ...scope.symbols,
+      symbol("w", "WORD"),
+      symbol("k", "INT"),
+      symbol("r", "REAL"),
+      symbol("x", "INT"),
+      symbol("a", "ARRAY [1..3] OF INT"),
+      symbol("ptr", "POINTER TO INT"),
+      symbol("rp", "REF_TO Point"),
+    ],
+  };
+  const shown = (text: string, values: Record<string, Value>) =>
+    inlineMarks(variableOccurrences(text, withParts, "MAIN"), monitorOf(values)).map((m) => [
+      text.slice(0, m.pos),
+      m.shown.text,
+    ]);
+
+  it("shows a pointer's own value as the monitor sends it: the ADR() it holds, or NULL", () => {
+    const text = "ptr := ADR(a[2]);\nx := ptr^ + rp^.x;";
+    expect(variableOccurrences(text, withParts, "MAIN").map((o) => [o.text, o.path, o.type])).toEqual([
+      ["ptr", "MAIN.PTR", "POINTER TO INT"],
+      ["a[2]", "MAIN.A", "INT"], // the element pointed to (ON-12)
+      ["x", "MAIN.X", "INT"],
+      ["ptr", "MAIN.PTR", "POINTER TO INT"],
+      ["rp", "MAIN.RP", "REF_TO Point"], // rp^.x's x is a member of what rp points to, not the variable x
+    ]);
+    expect(shown("ptr := ADR(a[2]);", { "MAIN.PTR": "ADR(a[2])" })).toEqual([["ptr", "ADR(a[2])"]]);
+    expect(shown("ptr := ADR(a[2]);", { "MAIN.PTR": "NULL" })).toEqual([["ptr", "NULL"]]);
+  });
+
+  it("names a bit or part of an integer or bit string as a path of its own, with the part's type", () => {
+    const text = "x := w.%X3; k.%B1 := 16#7F; IF w.15 AND k.%X15 THEN w.%W0 := 0; END_IF; y := r.1; z := w.%B2;";
+    expect(variableOccurrences(text, withParts, "MAIN").map((o) => [o.text, o.path, o.type])).toEqual([
+      ["x", "MAIN.X", "INT"],
+      ["w.%X3", "MAIN.W.%X3", "BOOL"],
+      ["k.%B1", "MAIN.K.%B1", "BYTE"],
+      ["w.15", "MAIN.W.%X15", "BOOL"], // the short form names bit 15
+      ["k.%X15", "MAIN.K.%X15", "BOOL"],
+      ["w.%W0", "MAIN.W.%W0", "WORD"],
+      ["r", "MAIN.R", "REAL"], // a REAL has no parts: r alone
+      ["w", "MAIN.W", "WORD"], // %B2 lies outside a WORD: the checker says so, w alone shows its value
+    ]);
+    expect(shown("IF w.%X3 THEN k.%B1 := 1; END_IF;", { "MAIN.W.%X3": true, "MAIN.K.%B1": 255 })).toEqual([
+      ["IF w.%X3", "TRUE"],
+      ["IF w.%X3 THEN k.%B1", "255"],
+    ]);
+  });
+});
+
 describe("StEditor online (issue 9: values inline, right-click commands)", () => {
   it("shows the marks as widgets after the variables and opens the menu on a variable", () => {
     const text = "Count := Count + 1;";

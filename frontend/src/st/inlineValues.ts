@@ -5,6 +5,8 @@
 // value on a double-click and opens the online commands on a right click. Occurrences come from the
 // highlighter's tokens, so comments, strings, keywords, function names and formal parameter names
 // (`IN :=`) are never taken for variables. An element with an expression index (`a[i + 1]`) shows none.
+// A pointer or REF_TO shows its own value as the monitor sends it (`ADR(a[2])`, NULL; ON-11), a bit or part of
+// an integer or bit string (`w.%X3`, `w.3`, `d.%B1`) the part's value, a path of its own (`MAIN.W.%X3`).
 import { StateEffect, StateField, type Extension } from "@codemirror/state";
 import { Decoration, EditorView, hoverTooltip, WidgetType, type DecorationSet } from "@codemirror/view";
 import { operandPath } from "../online/monitor";
@@ -13,6 +15,7 @@ import type { Value } from "../online/protocol";
 import { preparedText, shownOf, type Prepared, type ValueShown } from "../online/shown";
 import { valueTagClass } from "../online/ValueTag";
 import { formatValue } from "../online/values";
+import { partBits } from "../iec/vocabulary";
 import { tokenize } from "./language";
 import { membersOf, typeOfChain, type Scope } from "./members";
 
@@ -37,9 +40,39 @@ export interface Occurrence {
   element?: ElementAccess;
 }
 
-/** A type whose variables have one value to show (not an FB, a struct, an array or a reference). */
-const hasValue = (type: string, scope: Scope) =>
-  membersOf(type, scope) === null && !/^\s*(ARRAY|REF_TO|POINTER)\b/i.test(type);
+/** A type whose variables have one value to show (not an FB, a struct or an array); a pointer's is what it holds. */
+const hasValue = (type: string, scope: Scope) => membersOf(type, scope) === null && !/^\s*ARRAY\b/i.test(type);
+
+/** Part letters: their width in bits and type (ST's partial access, IEC 61131-3 ed. 3, 6.5.6). */
+const PARTS: Readonly<Record<string, readonly [number, string]>> = {
+  X: [1, "BOOL"],
+  B: [8, "BYTE"],
+  W: [16, "WORD"],
+  D: [32, "DWORD"],
+  L: [64, "LWORD"],
+};
+
+/**
+ * The bit or part selected after a variable of type `type` from token `dot` on (`.%X3`, `.3`, `.%B1`): its path
+ * suffix as the server names it (`.%X3`), its type and its last token; null when none is, or it lies outside.
+ */
+function partAfter(
+  tokens: readonly Token[],
+  dot: number,
+  type: string,
+): { suffix: string; type: string; last: number } | null {
+  const bits = partBits(type);
+  const first = tokens[dot + 1];
+  if (bits === null || tokens[dot]?.text !== "." || !first) return null;
+  const short = /^\d+$/.test(first.text) && first.style === "number";
+  const named =
+    first.text === "%" && tokens[dot + 2]?.from === first.to ? /^([XBWDL])(\d+)$/i.exec(tokens[dot + 2]!.text) : null;
+  if (!short && !named) return null;
+  const [letter, index] = named ? [named[1]!.toUpperCase(), Number(named[2])] : ["X", Number(first.text)];
+  const [width, partType] = PARTS[letter]!;
+  if ((index + 1) * width > bits) return null; // the checker reports it
+  return { suffix: `.%${letter}${index}`, type: partType, last: named ? dot + 2 : dot + 1 };
+}
 
 const ARRAY = /^\s*ARRAY\s*\[([^\]]*)\]\s*OF\s+(.+?)\s*$/i;
 
@@ -106,7 +139,7 @@ export function variableOccurrences(
     const t = tokens[i]!;
     if (t.text === "(") depth += 1;
     else if (t.text === ")") depth = Math.max(0, depth - 1);
-    if (t.style !== "variableName") continue;
+    if (t.style !== "variableName" || tokens[i - 1]?.text === ".") continue; // a member (`rp^.x`, `a[i].x`)
     const start = pastSelf(tokens, i);
     const chain = [tokens[start]!.text];
     let end = start;
@@ -122,6 +155,13 @@ export function variableOccurrences(
     const formal = depth > 0 && chain.length === 1 && (next === ":=" || next === "=>");
     const type = formal ? null : typeOfChain(chain, scope);
     const path = type !== null ? operandPath(chain.join("."), instance, scope.symbols) : null;
+    const part = path && type ? partAfter(tokens, end + 1, type) : null;
+    if (path && part) {
+      const to = tokens[part.last]!.to;
+      out.push({ from: t.from, to, text: text.slice(t.from, to), path: `${path}${part.suffix}`, type: part.type });
+      i = part.last;
+      continue;
+    }
     if (path && type && hasValue(type, scope))
       out.push({ from: t.from, to: tokens[end]!.to, text: text.slice(t.from, tokens[end]!.to), path, type });
     const array = path && type && next === "[" ? arrayOf(type) : null;
