@@ -25,14 +25,15 @@ export function declaredSymbols(declarations: string): SymbolInfo[] | null {
 
 /**
  * The library with each function block of the working copy described by its current declarations
- * (an FB created or changed since the last save); an FB whose text does not read as a table keeps
- * its saved entry (and it keeps its saved methods).
+ * (an FB created or changed since the last save), its base's pins first (EXTENDS, as the checker lists them); an
+ * FB whose text does not read as a table keeps its saved entry (and it keeps its saved methods).
  */
 export function workingLibrary(library: readonly LibraryEntry[], pous: readonly Pou[]): LibraryEntry[] {
   const saved = new Map(library.map((e) => [e.name.toUpperCase(), e]));
   const working = pous.flatMap((pou): LibraryEntry[] => {
-    const symbols = pou.kind === "function_block" ? declaredSymbols(pou.declarations ?? "") : null;
-    if (!symbols) return [];
+    const own = pou.kind === "function_block" ? declaredSymbols(pou.declarations ?? "") : null;
+    if (!own) return [];
+    const symbols = withInherited({ symbols: own, library: [], structs: new Map() }, pou, pous).symbols;
     const pins = (varClass: string) =>
       symbols.filter((s) => s.var_class === varClass).map((s) => ({ name: s.name, type: s.type }));
     return [
@@ -62,4 +63,26 @@ export function stScope(
 ): Scope {
   const own = declaredSymbols(declarations) ?? table?.symbols ?? [];
   return { symbols: [...own, ...(table?.globals ?? [])], library, structs: structTypes(types) };
+}
+
+/**
+ * The FB's scope with the variables of its base FBs (EXTENDS, nearest first) that it does not redeclare,
+ * from the working copy; a cycle or an unknown base ends the walk (the check reports those).
+ */
+export function withInherited(scope: Scope, pou: Pou, pous: readonly Pou[]): Scope {
+  const declared = (name: string) =>
+    scope.symbols.some((t) => t.var_class !== "VAR_GLOBAL" && t.name.toUpperCase() === name.toUpperCase());
+  const inherited: Scope["symbols"][number][] = [];
+  const seen = new Set([pou.name.toUpperCase()]);
+  let base = pou.extends?.trim().toUpperCase();
+  while (base && !seen.has(base)) {
+    seen.add(base);
+    const fb = pous.find((p) => p.kind === "function_block" && p.name.toUpperCase() === base);
+    if (!fb) break;
+    for (const s of declaredSymbols(fb.declarations ?? "") ?? [])
+      if (!declared(s.name) && !inherited.some((t) => t.name.toUpperCase() === s.name.toUpperCase())) inherited.push(s);
+    base = fb.extends?.trim().toUpperCase();
+  }
+  // before the globals: an instance variable hides a global of the same name
+  return inherited.length ? { ...scope, symbols: [...inherited, ...scope.symbols] } : scope;
 }

@@ -7,8 +7,8 @@ import type { Pou } from "../generated/api";
 import { useWorkspace } from "../store/project";
 import { memberCompletions, stCompletions, type StCompletions } from "./completion";
 import type { Scope } from "./members";
-import { stScope, workingLibrary } from "./scope";
-import { withInherited } from "./methodScope";
+import { qualifiers, withSelf } from "./qualifiers";
+import { stScope, withInherited, workingLibrary } from "./scope";
 import { useLiveCheck } from "../store/useLiveCheck";
 
 export function useStAssist(pou: Pou): { diagnostics: Diagnostic[]; completions: StCompletions; scope: Scope } {
@@ -20,15 +20,16 @@ export function useStAssist(pou: Pou): { diagnostics: Diagnostic[]; completions:
   const pous = project?.pous;
   const library = useMemo(() => workingLibrary(saved, pous ?? []), [saved, pous]);
   const diagnostics = useLiveCheck(project);
-  // a function block's instance holds the variables of the FBs it EXTENDS too
-  const scope = useMemo(
-    () => withInherited(stScope(table, declarations, types, library), pou, pous ?? []),
-    [table, declarations, types, library, pou, pous],
-  );
+  // a function block's instance holds the variables of the FBs it EXTENDS too; programs, enumerations, THIS^ and
+  // SUPER^ qualify members
+  const scope = useMemo(() => {
+    const inherited = withInherited(stScope(table, declarations, types, library), pou, pous ?? []);
+    return { ...inherited, qualifiers: withSelf(qualifiers(pous ?? [], types), pou, pous ?? []) };
+  }, [table, declarations, types, library, pou, pous]);
   const completions = useMemo(
     (): StCompletions => ({
       options: stCompletions([...scope.symbols], library),
-      members: (chain) => memberCompletions(chain, scope),
+      members: (chain, separator) => memberCompletions(chain, scope, separator),
     }),
     [scope, library],
   );

@@ -9,6 +9,7 @@ import type { Project } from "../generated/api";
 import { memberCompletions, stCompletions, type StCompletions } from "../st/completion";
 import { structTypes } from "../st/members";
 import { tokenize } from "../st/language";
+import { qualifiers } from "../st/qualifiers";
 import { declaredSymbols, workingLibrary } from "../st/scope";
 import { CHECK_DELAY_MS } from "../store/useLiveCheck";
 import { useWorkspace } from "../store/project";
@@ -70,10 +71,12 @@ export function useTestCompletions(project: Project | null, text = ""): StComple
         constant: false,
       }));
     const symbols = [...testLocals(text), ...programs, ...globals];
-    const scope = { symbols, library, structs: structTypes(project.types ?? "") };
+    const types = project.types ?? "";
+    // the programs are variables here (all their variables as members); the enumerations qualify their values
+    const scope = { symbols, library, structs: structTypes(types), qualifiers: qualifiers([], types) };
     return {
       options: [...verbCompletions, ...stCompletions([...scope.symbols], library)],
-      members: (chain: readonly string[]) => memberCompletions(chain, scope),
+      members: (chain: readonly string[], separator: "." | "#") => memberCompletions(chain, scope, separator),
     };
   }, [project, text, saved, tables]);
 }

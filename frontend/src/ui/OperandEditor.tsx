@@ -1,11 +1,20 @@
-// A text field for an operand, with autocomplete from the POU's symbols and the globals.
+// A text field for an operand, with autocomplete from the POU's symbols and the globals, and after a qualifier
+// (`T1.`, `Prog.`, `Color.`, `Color#`) from its members, as the editor's `members` finds them.
 import { useEffect, useMemo, useRef, useState, type CSSProperties } from "react";
 import type { SymbolInfo } from "../generated/api";
+
+/** What may follow a qualifier in an operand (`chain.`, or `Type#`); null: nothing (st/members.ts membersAfter). */
+export type MembersAfter = (
+  chain: readonly string[],
+  separator: "." | "#",
+) => readonly { name: string; type: string }[] | null;
 
 export interface OperandEditorProps {
   label: string;
   initial: string;
   suggestions?: readonly SymbolInfo[];
+  /** The members offered after a qualifier; none: only the plain names are offered. */
+  members?: MembersAfter;
   style?: CSSProperties;
   onCommit(text: string): void;
   onCancel(): void;
@@ -21,6 +30,27 @@ export function suggest<T extends { name: string }>(text: string, symbols: reado
   return hits.sort((a, b) => starts(a) - starts(b) || a.name.localeCompare(b.name)).slice(0, MAX_SUGGESTIONS);
 }
 
+/** A qualified operand being typed: the qualifier (`a.b`, `r^`, `Color`), its separator and what follows. */
+const QUALIFIED = /^\s*((?:[A-Za-z_][A-Za-z0-9_]*\^?\.)*[A-Za-z_][A-Za-z0-9_]*\^?)([.#])([A-Za-z0-9_]*)$/;
+
+/** The suggestions for `text`: after a qualifier, the members whose name starts with what follows it (in their
+ * order), each as the whole operand (`Color.Red`); else the symbols that `suggest` finds. */
+export function operandSuggestions(
+  text: string,
+  symbols: readonly SymbolInfo[],
+  members?: MembersAfter,
+): { name: string; type: string }[] {
+  const qualified = members ? QUALIFIED.exec(text) : null;
+  if (!qualified) return suggest(text, symbols);
+  const qualifier = qualified[1]!;
+  const separator = qualified[2] === "#" ? "#" : ".";
+  const needle = qualified[3]!.toUpperCase();
+  return (members!(qualifier.split("."), separator) ?? [])
+    .filter((m) => m.name.toUpperCase().startsWith(needle) && m.name.toUpperCase() !== needle)
+    .slice(0, MAX_SUGGESTIONS)
+    .map((m) => ({ name: `${qualifier}${separator}${m.name}`, type: m.type }));
+}
+
 /** The suggestion highlighted before the user picks one: the first, if it starts with the typed text
  * and the text names no symbol already (typing "Start" keeps Start even when StartCount exists). */
 export function defaultSuggestion(
@@ -33,10 +63,18 @@ export function defaultSuggestion(
   return list[0]?.name.toUpperCase().startsWith(needle) ? 0 : -1;
 }
 
-export function OperandEditor({ label, initial, suggestions = [], style, onCommit, onCancel }: OperandEditorProps) {
+export function OperandEditor({
+  label,
+  initial,
+  suggestions = [],
+  members,
+  style,
+  onCommit,
+  onCancel,
+}: OperandEditorProps) {
   const [text, setText] = useState(initial);
   const [active, setActive] = useState(-1);
-  const list = useMemo(() => suggest(text, suggestions), [text, suggestions]);
+  const list = useMemo(() => operandSuggestions(text, suggestions, members), [text, suggestions, members]);
   // Until the user picks with the arrows, a suggestion that starts with the typed text is highlighted,
   // and Enter or Tab take it (as IDE completion does): typing "Mo" + Enter gives "Motor".
   const highlighted = active >= 0 ? active : defaultSuggestion(text, list, suggestions);

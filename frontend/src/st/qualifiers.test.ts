@@ -1,0 +1,201 @@
+// Completion after qualified names (issue 25): a program's variables (`Prog.x`), an enumeration's values
+// (CODESYS `Color.Red`, IEC `Color#Red`), `THIS^.` / `SUPER^.`, an FB with EXTENDS, `r^.` of a reference.
+// What is offered is what the checker accepts (backend/ladderlab/st/body.py `_member`, `_fb_member`,
+// `_qualified_enum_value`, `_typed_literal`).
+import { CompletionContext } from "@codemirror/autocomplete";
+import { EditorState } from "@codemirror/state";
+import { describe, expect, it } from "vitest";
+import type { LibraryEntry, Pou } from "../generated/api";
+import { memberCompletions, stCompletionSource, stCompletions } from "./completion";
+import { membersAfter, structTypes, type Scope } from "./members";
+import { enumTypes, qualifiers, withSelf } from "./qualifiers";
+import { withInherited, workingLibrary } from "./scope";
+import { symbol } from "../test/symbols";
+
+const TYPES = `TYPE
+    Color : (Red, Green := 5, Blue); (* a comment (x, y) *)
+    Level : (Low, High) INT := Low;
+    Point : STRUCT x, y : INT; mode : (Fast, Slow); END_STRUCT;
+    Small : INT (0..10);
+END_TYPE`;
+
+const pou = (name: string, kind: Pou["kind"], declarations: string, more: Partial<Pou> = {}): Pou => ({
+  name,
+  kind,
+  language: "st",
+  declarations,
+  body: "",
+  ...more,
+});
+const OTHER = pou(
+  "Other",
+  "program",
+  `VAR_INPUT k : INT; END_VAR
+VAR_OUTPUT done : BOOL; at : Point; END_VAR
+VAR_IN_OUT io : INT; END_VAR
+VAR hidden : INT; END_VAR
+VAR_TEMP t : INT; END_VAR`,
+);
+const BASE = pou(
+  "Base",
+  "function_block",
+  "VAR_INPUT bi : INT; END_VAR\nVAR_OUTPUT bo : INT; END_VAR\nVAR bv : INT; END_VAR",
+);
+const DER = pou("Der", "function_block", "VAR_INPUT di : INT; END_VAR\nVAR dv : INT; END_VAR", { extends: "Base" });
+const POUS = [OTHER, BASE, DER, pou("Twice", "function", "VAR_INPUT a : INT; END_VAR", { return_type: "INT" })];
+
+const method = (name: string): LibraryEntry => ({
+  name,
+  kind: "function",
+  source: "user",
+  comment: null,
+  extensible: false,
+  inputs: [],
+  in_outs: [],
+  outputs: [],
+  return_type: null,
+});
+const SAVED: LibraryEntry[] = [
+  { ...method("Base"), kind: "function_block", methods: [method("Describe")] },
+  { ...method("Der"), kind: "function_block", methods: [method("Grow"), method("Describe")] },
+  method("Other.Reset"),
+];
+
+const scopeIn = (self: Pou | null, symbols = [symbol("p", "Point")]): Scope => {
+  const project = qualifiers(POUS, TYPES);
+  const scope = { symbols, library: workingLibrary(SAVED, POUS), structs: structTypes(TYPES) };
+  return self
+    ? { ...withInherited(scope, self, POUS), qualifiers: withSelf(project, self, POUS) }
+    : { ...scope, qualifiers: project };
+};
+const completer = (scope: Scope) => {
+  const source = stCompletionSource(() => ({
+    options: stCompletions([...scope.symbols], [...scope.library]),
+    members: (chain, separator) => memberCompletions(chain, scope, separator),
+  }));
+  return (doc: string) => source(new CompletionContext(EditorState.create({ doc }), doc.length, false));
+};
+const labels = (scope: Scope, doc: string) => completer(scope)(doc)?.options.map((o) => o.label) ?? null;
+
+describe("enumeration types from the TYPE text", () => {
+  it("reads each enumeration's values in order, with or without values and a base type; not a STRUCT field's", () => {
+    expect([...enumTypes(TYPES)].map(([name, values]) => [name, values.map((v) => `${v.name}:${v.type}`)])).toEqual([
+      ["COLOR", ["Red:Color", "Green:Color", "Blue:Color"]],
+      ["LEVEL", ["Low:Level", "High:Level"]],
+    ]);
+  });
+});
+
+describe("after a program's name (issue 25: Prog.x from another POU)", () => {
+  const at = completer(scopeIn(null));
+
+  it("offers its inputs and outputs, then its methods; not its in-outs, internal or temporary variables", () => {
+    // The checker: `Other.io` is ST-NOT-ACCESSIBLE (an in-out), `Other.hidden` / `Other.t` are internal.
+    const result = at("x := Other.");
+    expect(result?.from).toBe(11);
+    expect(result?.options.map((o) => [o.label, o.type, o.detail, o.info])).toEqual([
+      ["k", "property", "INT", "VAR_INPUT of Other"],
+      ["done", "property", "BOOL", "VAR_OUTPUT of Other"],
+      ["at", "property", "Point", "VAR_OUTPUT of Other"],
+      ["Reset", "method", "()", "METHOD of Other"],
+    ]);
+  });
+
+  it("follows a program's output down its type, and completes the word after the dot", () => {
+    expect(labels(scopeIn(null), "Other.at.")).toEqual(["x", "y", "mode"]);
+    expect(completer(scopeIn(null))("IF other.DO")?.from).toBe(9);
+    expect(labels(scopeIn(null), "Other.hidden.")).toBeNull();
+  });
+
+  it("is hidden by a variable of its name, as in the checker", () => {
+    expect(labels(scopeIn(null, [symbol("Other", "INT")]), "Other.")).toBeNull();
+  });
+});
+
+describe("after an enumeration type's name (issue 25: CODESYS Color.Red, IEC Color#Red)", () => {
+  it("offers its values after `Color.` and after `Color#`", () => {
+    const at = completer(scopeIn(null));
+    for (const doc of ["c := Color.", "c := color#"]) {
+      const result = at(doc);
+      expect(result?.from).toBe(11);
+      expect(result?.options.map((o) => [o.label, o.type, o.detail, o.info])).toEqual([
+        ["Red", "enum", "Color", "value of Color"],
+        ["Green", "enum", "Color", "value of Color"],
+        ["Blue", "enum", "Color", "value of Color"],
+      ]);
+    }
+    expect(at("CASE c OF Level#H")?.options.map((o) => o.label)).toEqual(["Low", "High"]);
+  });
+
+  it("offers nothing after a typed literal's elementary type, a based number, or a value", () => {
+    const at = completer(scopeIn(null));
+    expect(at("t := T#")).toBeNull();
+    expect(at("i := INT#")).toBeNull();
+    expect(at("w := 16#")).toBeNull();
+    expect(at("c := Color.Red.")).toBeNull();
+    expect(at("p := Point#")).toBeNull(); // a STRUCT has no typed literal
+  });
+
+  it("is hidden by a variable or a program of its name after the dot; `#` still names the type", () => {
+    const shadowed = scopeIn(null, [symbol("Color", "Point")]);
+    expect(labels(shadowed, "Color.")).toEqual(["x", "y", "mode"]);
+    expect(labels(shadowed, "Color#")).toEqual(["Red", "Green", "Blue"]);
+    const program = qualifiers([pou("Color", "program", "VAR_OUTPUT q : BOOL; END_VAR")], TYPES);
+    expect(membersAfter(["Color"], { ...scopeIn(null), qualifiers: program })?.map((m) => m.name)).toEqual(["q"]);
+  });
+});
+
+describe("THIS^. and SUPER^. in a function block (issue 25)", () => {
+  it("offers all the instance's variables (inherited ones too) and its methods after THIS^.", () => {
+    const result = completer(scopeIn(DER))("THIS^.");
+    expect(result?.options.map((o) => [o.label, o.info])).toEqual([
+      ["bi", "VAR_INPUT of THIS^"],
+      ["bo", "VAR_OUTPUT of THIS^"],
+      ["bv", "VAR of THIS^"],
+      ["di", "VAR_INPUT of THIS^"],
+      ["dv", "VAR of THIS^"],
+      ["Grow", "METHOD of THIS^"],
+      ["Describe", "METHOD of THIS^"],
+    ]);
+  });
+
+  it("offers the base's variables and methods after SUPER^., and neither outside a function block or program", () => {
+    expect(labels(scopeIn(DER), "x := SUPER^.")).toEqual(["bi", "bo", "bv", "Describe"]);
+    expect(labels(scopeIn(BASE), "SUPER^.")).toBeNull(); // Base extends nothing
+    expect(labels(scopeIn(POUS[3]!), "THIS^.")).toBeNull(); // a function
+    // the checker: `THIS^.io` is ST-NOT-ACCESSIBLE (an in-out), `THIS^.hidden` and `THIS^.t` are accepted
+    expect(labels(scopeIn(OTHER), "THIS^.")).toEqual(["k", "done", "at", "hidden", "t", "Reset"]);
+  });
+});
+
+describe("an instance of a function block with EXTENDS (issue 25)", () => {
+  it("offers the base's inputs and outputs before its own, and the methods it inherits", () => {
+    const scope = scopeIn(null, [symbol("d", "Der")]);
+    expect(labels(scope, "d.")).toEqual(["bi", "di", "bo", "Grow", "Describe"]);
+    expect(workingLibrary([], POUS).map((e) => [e.name, e.inputs.map((p) => p.name)])).toEqual([
+      ["Base", ["bi"]],
+      ["Der", ["bi", "di"]],
+    ]);
+  });
+});
+
+describe("through a reference (issue 25: r^. of REF_TO a STRUCT)", () => {
+  const scope = scopeIn(null, [
+    symbol("r", "REF_TO Point"),
+    symbol("pp", "POINTER TO Point"),
+    symbol("rr", "REFERENCE TO Point"),
+    symbol("rd", "REF_TO Der"),
+  ]);
+
+  it("offers the target's members after `r^.` and `p^.`, and after a REFERENCE TO's own dot (CODESYS)", () => {
+    expect(labels(scope, "x := r^.")).toEqual(["x", "y", "mode"]);
+    expect(labels(scope, "x := pp^.")).toEqual(["x", "y", "mode"]);
+    expect(labels(scope, "x := rr.")).toEqual(["x", "y", "mode"]);
+    expect(labels(scope, "rr^.")).toEqual(["x", "y", "mode"]);
+    expect(labels(scope, "rd^.")).toEqual(["bi", "di", "bo", "Grow", "Describe"]);
+  });
+
+  it("offers nothing after the dot of a REF_TO not dereferenced", () => {
+    expect(labels(scope, "x := r.")).toBeNull();
+  });
+});
