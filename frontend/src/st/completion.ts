@@ -108,12 +108,14 @@ export function memberCompletions(
   ];
 }
 
-/** The methods called on an instance of `owner` (named without their owner): those of the function block of that
- * name, else the program's (library entries `Prog.M`). */
+/** The methods called on an instance of `owner` (named without their owner): those of the function block or
+ * interface of that name, else the program's (library entries `Prog.M`). */
 function methodsOf(owner: string, scope: Scope): readonly LibraryEntry[] {
   const upper = owner.trim().toUpperCase();
   const fb = scope.library.find((e) => e.kind === "function_block" && e.name.toUpperCase() === upper);
   if (fb?.methods?.length) return fb.methods;
+  const itf = scope.interfaces?.get(upper);
+  if (itf) return itf.methods;
   const prefix = `${upper}.`;
   return scope.library
     .filter((e) => e.kind === "function" && e.name.toUpperCase().startsWith(prefix))

@@ -5,6 +5,7 @@
 // chain, `r^.`, or a name that is no variable (a program, an enumeration type: qualifiers.ts) - for ST
 // completion and the LD/FBD operand editor alike.
 import type { LibraryEntry, SymbolInfo } from "../generated/api";
+import type { InterfaceTypes } from "./interfaces";
 import { tokenize } from "./language";
 
 export interface Member {
@@ -79,6 +80,8 @@ export interface Scope {
   structs: StructTypes;
   /** The names besides the variables that `name.` may follow (qualifiers.ts); none: only variables have members. */
   qualifiers?: Qualifiers;
+  /** The INTERFACEs of the TYPE text (interfaces.ts): what follows a variable of one. */
+  interfaces?: InterfaceTypes;
 }
 
 /** The members of a type (FB pins or struct fields); null for a type without members. */
@@ -124,12 +127,15 @@ export interface Reached {
  * checker's ST-NOT-ACCESSIBLE, `THIS^.io` too). */
 const fromOutside = (members: readonly Member[]) => members.filter((m) => m.kind !== "VAR_IN_OUT");
 
-/** A type's members as an operand reaches them: a REFERENCE TO's target's (CODESYS dereferences it implicitly). */
+/** A type's members as an operand reaches them (an interface's: its properties and methods); a REFERENCE TO's
+ * target's (CODESYS dereferences it implicitly). */
 function reachType(type: string, scope: Scope): Reached | null {
   const target = /^\s*REFERENCE\s+TO\b/i.test(type) ? referencedType(type)! : type;
+  const upper = target.trim().toUpperCase();
+  const itf = scope.interfaces?.get(upper);
+  if (itf) return { members: itf.properties, owner: itf.name, methodsOf: itf.name };
   const members = membersOf(target, scope);
   if (members === null) return null;
-  const upper = target.trim().toUpperCase();
   const fb = scope.library.some((e) => e.kind === "function_block" && e.name.toUpperCase() === upper);
   return { members: fromOutside(members), owner: target.trim(), methodsOf: fb ? target.trim() : null };
 }

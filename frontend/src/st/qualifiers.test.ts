@@ -1,5 +1,6 @@
 // Completion after qualified names (issue 25): a program's variables (`Prog.x`), an enumeration's values
-// (CODESYS `Color.Red`, IEC `Color#Red`), `THIS^.` / `SUPER^.`, an FB with EXTENDS, `r^.` of a reference.
+// (CODESYS `Color.Red`, IEC `Color#Red`), `THIS^.` / `SUPER^.`, an FB with EXTENDS, `r^.` of a reference, an
+// interface variable.
 // What is offered is what the checker accepts (backend/ladderlab/st/body.py `_member`, `_fb_member`,
 // `_qualified_enum_value`, `_typed_literal`).
 import { CompletionContext } from "@codemirror/autocomplete";
@@ -8,7 +9,8 @@ import { describe, expect, it } from "vitest";
 import type { LibraryEntry, Pou } from "../generated/api";
 import { memberCompletions, stCompletionSource, stCompletions } from "./completion";
 import { membersAfter, structTypes, type Scope } from "./members";
-import { enumTypes, qualifiers, withSelf } from "./qualifiers";
+import { interfaceTypes } from "./interfaces";
+import { enumTypes, projectScope, qualifiers, withSelf } from "./qualifiers";
 import { withInherited, workingLibrary } from "./scope";
 import { symbol } from "../test/symbols";
 
@@ -197,5 +199,56 @@ describe("through a reference (issue 25: r^. of REF_TO a STRUCT)", () => {
 
   it("offers nothing after the dot of a REF_TO not dereferenced", () => {
     expect(labels(scope, "x := r.")).toBeNull();
+  });
+});
+
+describe("an interface variable (issue 25: itf. offers the interface's properties and methods)", () => {
+  const types = `TYPE
+    Point : STRUCT x : INT; END_STRUCT;
+END_TYPE
+INTERFACE ILevel
+PROPERTY Level : INT
+GET
+END_GET
+SET
+END_SET
+END_PROPERTY
+METHOD Fill : BOOL
+VAR_INPUT amount : INT; END_VAR
+VAR_OUTPUT spilled : INT; END_VAR
+END_METHOD
+END_INTERFACE
+INTERFACE ILimited EXTENDS ILevel (* a comment: METHOD Nope *)
+METHOD Room : INT
+END_METHOD
+END_INTERFACE`;
+
+  it("reads each interface with what it extends", () => {
+    const found = interfaceTypes(types);
+    expect(
+      [...found].map(([key, i]) => [key, i.properties.map((p) => `${p.name}:${p.type}`), i.methods.map((m) => m.name)]),
+    ).toEqual([
+      ["ILEVEL", ["Level:INT"], ["Fill"]],
+      ["ILIMITED", ["Level:INT"], ["Room", "Fill"]],
+    ]);
+    expect(found.get("ILEVEL")?.methods[0]).toMatchObject({
+      inputs: [{ name: "amount", type: "INT" }],
+      outputs: [{ name: "spilled", type: "INT" }],
+      return_type: "BOOL",
+    });
+  });
+
+  it("offers the properties, then the methods with their formal call", () => {
+    const scope: Scope = {
+      symbols: [symbol("itf", "ILimited"), symbol("r", "REFERENCE TO ILevel")],
+      library: [],
+      ...projectScope([], types),
+    };
+    expect(completer(scope)("itf.")?.options.map((o) => [o.label, o.type, o.detail, o.apply, o.info])).toEqual([
+      ["Level", "property", "INT", undefined, "PROPERTY of ILimited"],
+      ["Room", "method", "() : INT", "Room()", "METHOD of ILimited"],
+      ["Fill", "method", "(amount: INT) : BOOL", "Fill(amount := , spilled => )", "METHOD of ILimited"],
+    ]);
+    expect(labels(scope, "x := itf.Level.")).toBeNull();
   });
 });

@@ -5,7 +5,8 @@
 // `SUPER^` (its base's). A named GVL's variables (`GVL_IO.x`) are one more entry of `qualifiers`.
 import type { Pou } from "../generated/api";
 import { tokenize } from "./language";
-import type { Member, Qualifier, Qualifiers } from "./members";
+import { interfaceTypes, type InterfaceTypes } from "./interfaces";
+import { structTypes, type Member, type Qualifier, type Qualifiers, type StructTypes } from "./members";
 import { withInherited } from "./scope";
 import { declaredSymbols } from "./scope";
 
@@ -76,4 +77,13 @@ export function withSelf(found: Qualifiers, pou: Pou, pous: readonly Pou[]): Qua
   if (base)
     self.set("SUPER^", { name: "SUPER^", kind: "SUPER^", members: instanceMembers(base, pous), methodsOf: base.name });
   return self;
+}
+
+/** What the project's TYPE text and programs give a scope besides its variables and library: the STRUCTs, the
+ * INTERFACEs and the qualifiers. */
+export function projectScope(
+  pous: readonly Pou[],
+  types: string,
+): { structs: StructTypes; interfaces: InterfaceTypes; qualifiers: Qualifiers } {
+  return { structs: structTypes(types), interfaces: interfaceTypes(types), qualifiers: qualifiers(pous, types) };
 }

@@ -1,12 +1,12 @@
 // What the LD/FBD operand editor offers after a qualifier (`T1.`, `Prog.`, `Color.`, `Color#`): the same answer as
 // ST completion's (members.ts `membersAfter`), over the POU's symbols and the working copy's function blocks,
-// STRUCTs, enumerations and programs.
+// STRUCTs, INTERFACEs, enumerations and programs.
 import { useMemo } from "react";
 import type { SymbolInfo } from "../generated/api";
 import { useWorkspace } from "../store/project";
 import type { MembersAfter } from "../ui/OperandEditor";
-import { membersAfter, structTypes, type Scope } from "./members";
-import { qualifiers } from "./qualifiers";
+import { membersAfter, type Scope } from "./members";
+import { projectScope } from "./qualifiers";
 import { workingLibrary } from "./scope";
 
 export function useOperandMembers(symbols: readonly SymbolInfo[]): MembersAfter {
@@ -15,12 +15,7 @@ export function useOperandMembers(symbols: readonly SymbolInfo[]): MembersAfter 
   const pous = project?.pous;
   const types = project?.types ?? "";
   return useMemo(() => {
-    const scope: Scope = {
-      symbols,
-      library: workingLibrary(saved, pous ?? []),
-      structs: structTypes(types),
-      qualifiers: qualifiers(pous ?? [], types),
-    };
+    const scope: Scope = { symbols, library: workingLibrary(saved, pous ?? []), ...projectScope(pous ?? [], types) };
     return (chain, separator) => membersAfter(chain, scope, separator);
   }, [symbols, saved, pous, types]);
 }

@@ -7,7 +7,7 @@ import type { Pou } from "../generated/api";
 import { useWorkspace } from "../store/project";
 import { memberCompletions, stCompletions, type StCompletions } from "./completion";
 import type { Scope } from "./members";
-import { qualifiers, withSelf } from "./qualifiers";
+import { projectScope, withSelf } from "./qualifiers";
 import { stScope, withInherited, workingLibrary } from "./scope";
 import { useLiveCheck } from "../store/useLiveCheck";
 
@@ -21,10 +21,11 @@ export function useStAssist(pou: Pou): { diagnostics: Diagnostic[]; completions:
   const library = useMemo(() => workingLibrary(saved, pous ?? []), [saved, pous]);
   const diagnostics = useLiveCheck(project);
   // a function block's instance holds the variables of the FBs it EXTENDS too; programs, enumerations, THIS^ and
-  // SUPER^ qualify members
+  // SUPER^ qualify members; an interface variable has its interface's
   const scope = useMemo(() => {
     const inherited = withInherited(stScope(table, declarations, types, library), pou, pous ?? []);
-    return { ...inherited, qualifiers: withSelf(qualifiers(pous ?? [], types), pou, pous ?? []) };
+    const project = projectScope(pous ?? [], types);
+    return { ...inherited, ...project, qualifiers: withSelf(project.qualifiers, pou, pous ?? []) };
   }, [table, declarations, types, library, pou, pous]);
   const completions = useMemo(
     (): StCompletions => ({

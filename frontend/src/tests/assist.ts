@@ -7,9 +7,8 @@ import type { Completion } from "@codemirror/autocomplete";
 import type { Diagnostic, LibraryEntry, SymbolInfo } from "../generated/api";
 import type { Project } from "../generated/api";
 import { memberCompletions, stCompletions, type StCompletions } from "../st/completion";
-import { structTypes } from "../st/members";
 import { tokenize } from "../st/language";
-import { qualifiers } from "../st/qualifiers";
+import { projectScope } from "../st/qualifiers";
 import { declaredSymbols, workingLibrary } from "../st/scope";
 import { CHECK_DELAY_MS } from "../store/useLiveCheck";
 import { useWorkspace } from "../store/project";
@@ -73,7 +72,7 @@ export function useTestCompletions(project: Project | null, text = ""): StComple
     const symbols = [...testLocals(text), ...programs, ...globals];
     const types = project.types ?? "";
     // the programs are variables here (all their variables as members); the enumerations qualify their values
-    const scope = { symbols, library, structs: structTypes(types), qualifiers: qualifiers([], types) };
+    const scope = { symbols, library, ...projectScope([], types) };
     return {
       options: [...verbCompletions, ...stCompletions([...scope.symbols], library)],
       members: (chain: readonly string[], separator: "." | "#") => memberCompletions(chain, scope, separator),
