@@ -82,6 +82,8 @@ export interface Scope {
   qualifiers?: Qualifiers;
   /** The INTERFACEs of the TYPE text (interfaces.ts): what follows a variable of one. */
   interfaces?: InterfaceTypes;
+  /** Upper-case function block name -> the PROPERTYs another POU may use on its instances (qualifiers.ts). */
+  properties?: ReadonlyMap<string, readonly Member[]>;
 }
 
 /** The members of a type (FB pins or struct fields); null for a type without members. */
@@ -127,8 +129,8 @@ export interface Reached {
  * checker's ST-NOT-ACCESSIBLE, `THIS^.io` too). */
 const fromOutside = (members: readonly Member[]) => members.filter((m) => m.kind !== "VAR_IN_OUT");
 
-/** A type's members as an operand reaches them (an interface's: its properties and methods); a REFERENCE TO's
- * target's (CODESYS dereferences it implicitly). */
+/** A type's members as an operand reaches them (an FB's pins and properties, an interface's properties and methods);
+ * a REFERENCE TO's target's (CODESYS dereferences it implicitly). */
 function reachType(type: string, scope: Scope): Reached | null {
   const target = /^\s*REFERENCE\s+TO\b/i.test(type) ? referencedType(type)! : type;
   const upper = target.trim().toUpperCase();
@@ -137,7 +139,12 @@ function reachType(type: string, scope: Scope): Reached | null {
   const members = membersOf(target, scope);
   if (members === null) return null;
   const fb = scope.library.some((e) => e.kind === "function_block" && e.name.toUpperCase() === upper);
-  return { members: fromOutside(members), owner: target.trim(), methodsOf: fb ? target.trim() : null };
+  const properties = scope.properties?.get(upper) ?? [];
+  return {
+    members: [...fromOutside(members), ...properties],
+    owner: target.trim(),
+    methodsOf: fb ? target.trim() : null,
+  };
 }
 
 /**

@@ -252,3 +252,40 @@ END_INTERFACE`;
     expect(labels(scope, "x := itf.Level.")).toBeNull();
   });
 });
+
+describe("PROPERTYs after an instance, a program, THIS^. and SUPER^. (issue 25)", () => {
+  const property = (name: string, access: "PUBLIC" | "PRIVATE" | "PROTECTED") => ({
+    name,
+    type: "INT",
+    access,
+    get: { declarations: "", body: "" },
+  });
+  const tank = pou("Tank", "function_block", "VAR_INPUT fill : INT; END_VAR", {
+    properties: [property("Level", "PUBLIC"), property("Secret", "PRIVATE"), property("Guarded", "PROTECTED")],
+  });
+  const big = pou("BigTank", "function_block", "VAR extra : INT; END_VAR", {
+    extends: "Tank",
+    properties: [property("Room", "PRIVATE")],
+  });
+  const plant = pou("Plant", "program", "VAR_OUTPUT q : BOOL; END_VAR", {
+    properties: [property("Mode", "PUBLIC"), property("Hidden", "PRIVATE")],
+  });
+  const pous = [tank, big, plant];
+  const scopeOf = (self: Pou | null): Scope => {
+    const project = projectScope(pous, "");
+    const scope = { symbols: [symbol("t", "BigTank")], library: workingLibrary([], pous), ...project };
+    return self ? { ...scope, qualifiers: withSelf(project.qualifiers, self, pous) } : scope;
+  };
+
+  it("offers only the PUBLIC ones from another POU (the checker's check_access), inherited ones too", () => {
+    expect(labels(scopeOf(null), "t.")).toEqual(["fill", "Level"]);
+    expect(labels(scopeOf(null), "Plant.")).toEqual(["q", "Mode"]);
+    expect(completer(scopeOf(null))("t.")?.options.at(-1)?.info).toBe("PROPERTY of BigTank");
+  });
+
+  it("offers the own PRIVATE and the inherited PROTECTED ones after THIS^., the base's non-PRIVATE after SUPER^.", () => {
+    expect(labels(scopeOf(big), "THIS^.")).toEqual(["fill", "extra", "Room", "Level", "Guarded"]);
+    expect(labels(scopeOf(big), "SUPER^.")).toEqual(["fill", "Level", "Guarded"]);
+    expect(labels(scopeOf(tank), "THIS^.")).toEqual(["fill", "Level", "Secret", "Guarded"]);
+  });
+});

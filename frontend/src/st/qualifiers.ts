@@ -5,9 +5,9 @@
 // `SUPER^` (its base's). A named GVL's variables (`GVL_IO.x`) are one more entry of `qualifiers`.
 import type { Pou } from "../generated/api";
 import { tokenize } from "./language";
-import { interfaceTypes, type InterfaceTypes } from "./interfaces";
-import { structTypes, type Member, type Qualifier, type Qualifiers, type StructTypes } from "./members";
-import { withInherited } from "./scope";
+import { interfaceTypes } from "./interfaces";
+import { structTypes, type Member, type Qualifier, type Qualifiers, type Scope } from "./members";
+import { lineage, withInherited } from "./scope";
 import { declaredSymbols } from "./scope";
 
 /** Upper-case enumeration type name -> its values in declaration order (each of the enumeration's type). */
@@ -36,11 +36,34 @@ export function enumTypes(text: string): ReadonlyMap<string, readonly Member[]> 
   return types;
 }
 
-/** A program's members seen from another POU: its inputs and outputs. */
+/** Where code uses an instance's PROPERTYs: in another POU, in the FB's own code (`THIS^`), in the code of an FB
+ * derived from it (`SUPER^`). */
+type UsedFrom = "outside" | "own" | "derived";
+
+/** The PROPERTYs of `pou` and those it inherits, each once (the nearest: an override), that code `from` where may
+ * use (the checker's check_access: PRIVATE in the FB's own code only, PROTECTED in derived FBs' too). */
+export function propertiesOf(pou: Pou, pous: readonly Pou[], from: UsedFrom): Member[] {
+  const found: Member[] = [];
+  lineage(pou, pous).forEach((owner, depth) => {
+    for (const p of owner.properties ?? []) {
+      const access = p.access ?? "PUBLIC";
+      const allowed =
+        access === "PUBLIC" ||
+        access === "INTERNAL" ||
+        (from !== "outside" && (access === "PROTECTED" || (depth === 0 && from === "own")));
+      if (allowed && !found.some((f) => f.name.toUpperCase() === p.name.toUpperCase()))
+        found.push({ name: p.name, type: p.type, kind: "PROPERTY" });
+    }
+  });
+  return found;
+}
+
+/** A program's members seen from another POU: its inputs and outputs, its PUBLIC properties. */
 function programMembers(pou: Pou): Member[] {
-  return (declaredSymbols(pou.declarations ?? "") ?? [])
+  const variables = (declaredSymbols(pou.declarations ?? "") ?? [])
     .filter((s) => s.var_class === "VAR_INPUT" || s.var_class === "VAR_OUTPUT")
     .map((s) => ({ name: s.name, type: s.type, kind: s.var_class }));
+  return [...variables, ...propertiesOf(pou, [], "outside")];
 }
 
 /** The project's qualifiers: its enumeration types, then its programs (a program hides a type of its name, as in
@@ -60,10 +83,16 @@ export function qualifiers(pous: readonly Pou[], types: string): Map<string, Qua
   return found;
 }
 
-/** The variables of function block or program `pou` (those it inherits through EXTENDS too), as members. */
-function instanceMembers(pou: Pou, pous: readonly Pou[]): Member[] {
+/** The variables of function block or program `pou` (those it inherits through EXTENDS too) and the properties
+ * code `from` where may use, as members. */
+function instanceMembers(pou: Pou, pous: readonly Pou[], from: UsedFrom): Member[] {
   const own = { symbols: declaredSymbols(pou.declarations ?? "") ?? [], library: [], structs: new Map() };
-  return withInherited(own, pou, pous).symbols.map((s) => ({ name: s.name, type: s.type, kind: s.var_class }));
+  const variables = withInherited(own, pou, pous).symbols.map((s) => ({
+    name: s.name,
+    type: s.type,
+    kind: s.var_class,
+  }));
+  return [...variables, ...propertiesOf(pou, pous, from)];
 }
 
 /** `found` with `THIS^` (all the variables of `pou`, a function block or program, and its methods) and, when it
@@ -71,19 +100,34 @@ function instanceMembers(pou: Pou, pous: readonly Pou[]): Member[] {
 export function withSelf(found: Qualifiers, pou: Pou, pous: readonly Pou[]): Qualifiers {
   if (pou.kind !== "function_block" && pou.kind !== "program") return found;
   const self = new Map(found);
-  self.set("THIS^", { name: "THIS^", kind: "THIS^", members: instanceMembers(pou, pous), methodsOf: pou.name });
+  self.set("THIS^", { name: "THIS^", kind: "THIS^", members: instanceMembers(pou, pous, "own"), methodsOf: pou.name });
   const name = pou.extends?.trim().toUpperCase();
   const base = name ? pous.find((p) => p.kind === "function_block" && p.name.toUpperCase() === name) : undefined;
   if (base)
-    self.set("SUPER^", { name: "SUPER^", kind: "SUPER^", members: instanceMembers(base, pous), methodsOf: base.name });
+    self.set("SUPER^", {
+      name: "SUPER^",
+      kind: "SUPER^",
+      members: instanceMembers(base, pous, "derived"),
+      methodsOf: base.name,
+    });
   return self;
 }
 
-/** What the project's TYPE text and programs give a scope besides its variables and library: the STRUCTs, the
- * INTERFACEs and the qualifiers. */
+/** What the project's TYPE text and POUs give a scope besides its variables and library: the STRUCTs, the
+ * INTERFACEs, the qualifiers and the function blocks' PROPERTYs. */
 export function projectScope(
   pous: readonly Pou[],
   types: string,
-): { structs: StructTypes; interfaces: InterfaceTypes; qualifiers: Qualifiers } {
-  return { structs: structTypes(types), interfaces: interfaceTypes(types), qualifiers: qualifiers(pous, types) };
+): Required<Pick<Scope, "structs" | "interfaces" | "qualifiers" | "properties">> {
+  const properties = new Map(
+    pous
+      .filter((p) => p.kind === "function_block")
+      .map((fb) => [fb.name.toUpperCase(), propertiesOf(fb, pous, "outside")] as const),
+  );
+  return {
+    structs: structTypes(types),
+    interfaces: interfaceTypes(types),
+    qualifiers: qualifiers(pous, types),
+    properties,
+  };
 }

@@ -65,24 +65,27 @@ export function stScope(
   return { symbols: [...own, ...(table?.globals ?? [])], library, structs: structTypes(types) };
 }
 
-/**
- * The FB's scope with the variables of its base FBs (EXTENDS, nearest first) that it does not redeclare,
- * from the working copy; a cycle or an unknown base ends the walk (the check reports those).
- */
+/** Function block (or program) `pou`, then the FBs it EXTENDS in the working copy, nearest first; a cycle or an
+ * unknown base ends the walk (the check reports those). */
+export function lineage(pou: Pou, pous: readonly Pou[]): Pou[] {
+  const chain = [pou];
+  for (let base = pou.extends?.trim().toUpperCase(); base && !chain.some((p) => p.name.toUpperCase() === base);) {
+    const fb = pous.find((p) => p.kind === "function_block" && p.name.toUpperCase() === base);
+    if (!fb) break;
+    chain.push(fb);
+    base = fb.extends?.trim().toUpperCase();
+  }
+  return chain;
+}
+
+/** The FB's scope with the variables of its base FBs (EXTENDS, nearest first) that it does not redeclare. */
 export function withInherited(scope: Scope, pou: Pou, pous: readonly Pou[]): Scope {
   const declared = (name: string) =>
     scope.symbols.some((t) => t.var_class !== "VAR_GLOBAL" && t.name.toUpperCase() === name.toUpperCase());
   const inherited: Scope["symbols"][number][] = [];
-  const seen = new Set([pou.name.toUpperCase()]);
-  let base = pou.extends?.trim().toUpperCase();
-  while (base && !seen.has(base)) {
-    seen.add(base);
-    const fb = pous.find((p) => p.kind === "function_block" && p.name.toUpperCase() === base);
-    if (!fb) break;
+  for (const fb of lineage(pou, pous).slice(1))
     for (const s of declaredSymbols(fb.declarations ?? "") ?? [])
       if (!declared(s.name) && !inherited.some((t) => t.name.toUpperCase() === s.name.toUpperCase())) inherited.push(s);
-    base = fb.extends?.trim().toUpperCase();
-  }
   // before the globals: an instance variable hides a global of the same name
   return inherited.length ? { ...scope, symbols: [...inherited, ...scope.symbols] } : scope;
 }
