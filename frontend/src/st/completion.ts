@@ -25,8 +25,13 @@ const signature = (entry: LibraryEntry) =>
   `(${[...entry.inputs, ...entry.in_outs].map((p) => `${p.name}: ${p.type}`).join(", ")})` +
   (entry.return_type ? ` : ${entry.return_type}` : "");
 
-/** Every completion for a POU, variables first; names are matched case-insensitively by CodeMirror. */
-export function stCompletions(symbols: SymbolInfo[], library: LibraryEntry[]): Completion[] {
+/** Every completion for a POU, variables first; names are matched case-insensitively by CodeMirror. `project`
+ * adds its programs, enumerations and INTERFACEs (projectNames). */
+export function stCompletions(
+  symbols: SymbolInfo[],
+  library: LibraryEntry[],
+  project: Pick<Scope, "interfaces" | "qualifiers"> = {},
+): Completion[] {
   const byName = new Map(library.map((e) => [e.name.toUpperCase(), e]));
   const variables = symbols.map((s): Completion => {
     const fb = byName.get(s.type.toUpperCase());
@@ -57,7 +62,26 @@ export function stCompletions(symbols: SymbolInfo[], library: LibraryEntry[]): C
   const fbTypes = library
     .filter((e) => e.kind === "function_block")
     .map((e): Completion => ({ label: e.name, type: "class", detail: "function block", info: e.comment ?? undefined }));
-  return [...variables, ...functions, ...fbTypes, ...LANGUAGE_WORDS];
+  return [...variables, ...functions, ...fbTypes, ...projectNames(project, symbols), ...LANGUAGE_WORDS];
+}
+
+/** The project's programs (`Prog.` is followed by their inputs, outputs and methods), enumerations and INTERFACEs,
+ * but those a variable's name hides. */
+function projectNames(project: Pick<Scope, "interfaces" | "qualifiers">, symbols: SymbolInfo[]): Completion[] {
+  const hidden = new Set(symbols.map((s) => s.name.toUpperCase()));
+  const named = [...(project.qualifiers?.values() ?? [])].flatMap((q): Completion[] =>
+    q.kind === "PROGRAM"
+      ? [{ label: q.name, type: "namespace", detail: "PROGRAM" }]
+      : q.kind === "enumeration"
+        ? [{ label: q.name, type: "type", detail: "enumeration", info: `(${q.members.map((m) => m.name).join(", ")})` }]
+        : [],
+  );
+  const interfaces = [...(project.interfaces?.values() ?? [])].map((i): Completion => ({
+    label: i.name,
+    type: "interface",
+    detail: "INTERFACE",
+  }));
+  return [...named, ...interfaces].filter((c) => !hidden.has(c.label.toUpperCase()));
 }
 
 /** The grammar's keywords and the elementary type names, ranked below the POU's own names. */

@@ -72,7 +72,7 @@ const scopeIn = (self: Pou | null, symbols = [symbol("p", "Point")]): Scope => {
 };
 const completer = (scope: Scope) => {
   const source = stCompletionSource(() => ({
-    options: stCompletions([...scope.symbols], [...scope.library]),
+    options: stCompletions([...scope.symbols], [...scope.library], scope),
     members: (chain, separator) => memberCompletions(chain, scope, separator),
   }));
   return (doc: string) => source(new CompletionContext(EditorState.create({ doc }), doc.length, false));
@@ -111,6 +111,21 @@ describe("after a program's name (issue 25: Prog.x from another POU)", () => {
 
   it("is hidden by a variable of its name, as in the checker", () => {
     expect(labels(scopeIn(null, [symbol("Other", "INT")]), "Other.")).toBeNull();
+  });
+});
+
+describe("the names that qualify (issue 25: Prog and Color are words to complete too)", () => {
+  it("offers the programs and enumeration types among the words, after the variables; not those a variable hides", () => {
+    const words = (scope: Scope) =>
+      completer(scope)("x := C")
+        ?.options.filter((o) => o.type === "namespace" || (o.type === "type" && o.detail === "enumeration"))
+        .map((o) => [o.label, o.type, o.detail, o.info]);
+    expect(words(scopeIn(null))).toEqual([
+      ["Color", "type", "enumeration", "(Red, Green, Blue)"],
+      ["Level", "type", "enumeration", "(Low, High)"],
+      ["Other", "namespace", "PROGRAM", undefined],
+    ]);
+    expect(words(scopeIn(null, [symbol("other", "INT")]))?.map((w) => w[0])).toEqual(["Color", "Level"]);
   });
 });
 

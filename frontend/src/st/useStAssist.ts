@@ -29,7 +29,7 @@ export function useStAssist(pou: Pou): { diagnostics: Diagnostic[]; completions:
   }, [table, declarations, types, library, pou, pous]);
   const completions = useMemo(
     (): StCompletions => ({
-      options: stCompletions([...scope.symbols], library),
+      options: stCompletions([...scope.symbols], library, scope),
       members: (chain, separator) => memberCompletions(chain, scope, separator),
     }),
     [scope, library],

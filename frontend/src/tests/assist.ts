@@ -74,7 +74,7 @@ export function useTestCompletions(project: Project | null, text = ""): StComple
     // the programs are variables here (all their variables as members); the enumerations qualify their values
     const scope = { symbols, library, ...projectScope([], types) };
     return {
-      options: [...verbCompletions, ...stCompletions([...scope.symbols], library)],
+      options: [...verbCompletions, ...stCompletions([...scope.symbols], library, scope)],
       members: (chain: readonly string[], separator: "." | "#") => memberCompletions(chain, scope, separator),
     };
   }, [project, text, saved, tables]);
