@@ -9,6 +9,7 @@ import type { Completion, CompletionContext, CompletionResult } from "@codemirro
 import type { LibraryEntry, SymbolInfo } from "../generated/api";
 import { ALIASES, DECLARABLE_TYPES, KEYWORDS } from "../iec/vocabulary";
 import { reach, type Scope } from "./members";
+import { QUALIFIER_PART as PART } from "../ui/OperandEditor";
 
 /** The formal call of `entry` by `callee` (a function name or an FB instance). */
 export function callTemplate(callee: string, entry: LibraryEntry): string {
@@ -153,9 +154,9 @@ export interface StCompletions {
   members(chain: readonly string[], separator: "." | "#"): Completion[] | null;
 }
 
-/** A member being typed: `a.b.` (a part may be dereferenced, `r^.`, `THIS^.`), or an enumeration's `Color#`. */
-const QUALIFIED =
-  /(?:[A-Za-z_][A-Za-z0-9_]*\^?(?:\.[A-Za-z_][A-Za-z0-9_]*\^?)*\.|[A-Za-z_][A-Za-z0-9_]*#)[A-Za-z0-9_]*/;
+/** A member being typed: `a.b.` (a part may be indexed or dereferenced: `a[i].`, `r^.`, `THIS^.`), or an
+ * enumeration's `Color#`. */
+const QUALIFIED = new RegExp(String.raw`(?:${PART}(?:\.${PART})*\.|[A-Za-z_][A-Za-z0-9_]*#)[A-Za-z0-9_]*`);
 
 /** A CodeMirror completion source over `completions()` (read at each request, so it follows the symbols). */
 export function stCompletionSource(completions: () => StCompletions) {

@@ -14,7 +14,7 @@ import { preparedText, shownOf, type Prepared, type ValueShown } from "../online
 import { valueTagClass } from "../online/ValueTag";
 import { formatValue } from "../online/values";
 import { tokenize } from "./language";
-import { membersOf, typeOfChain, type Scope } from "./members";
+import { ARRAY_TYPE, membersOf, typeOfChain, type Scope } from "./members";
 
 /** An array element `a[i, 2]`: each index (a variable's path or a number) and the array's lower bounds. */
 export interface ElementAccess {
@@ -41,11 +41,9 @@ export interface Occurrence {
 const hasValue = (type: string, scope: Scope) =>
   membersOf(type, scope) === null && !/^\s*(ARRAY|REF_TO|POINTER)\b/i.test(type);
 
-const ARRAY = /^\s*ARRAY\s*\[([^\]]*)\]\s*OF\s+(.+?)\s*$/i;
-
 /** An array type's lower bounds and element type, when its bounds are numbers. */
 function arrayOf(type: string): { lows: number[]; element: string } | null {
-  const match = ARRAY.exec(type);
+  const match = ARRAY_TYPE.exec(type);
   if (!match) return null;
   const lows = match[1]!.split(",").map((d) => Number(d.split("..")[0]!.trim()));
   return lows.every(Number.isInteger) ? { lows, element: match[2]! } : null;

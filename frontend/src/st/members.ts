@@ -112,6 +112,9 @@ export function typeOfChain(chain: readonly string[], scope: Scope): string | nu
   return type;
 }
 
+/** `ARRAY [bounds] OF element`: the bounds' text and the element type. */
+export const ARRAY_TYPE = /^\s*ARRAY\s*\[([^\]]*)\]\s*OF\s+(.+?)\s*$/i;
+
 /** `REF_TO T`, `REFERENCE TO T`, `POINTER TO T` -> T; null: not a reference type. */
 export function referencedType(type: string): string | null {
   return /^\s*(?:REF_TO|REFERENCE\s+TO|POINTER\s+TO)\s+(.+?)\s*$/i.exec(type)?.[1] ?? null;
@@ -148,7 +151,7 @@ function reachType(type: string, scope: Scope): Reached | null {
 }
 
 /**
- * What `a.b.` reaches (`a^.b.` and `THIS^.` too): a variable's chain as its types say, else the members of the
+ * What `a.b.` reaches (`a^.b.`, `a[i].b.` and `THIS^.` too): a variable's chain as its types say, else the members of the
  * qualifier it starts with (a program's inputs and outputs, an enumeration's values); with "#", an enumeration's
  * `Color#`. Null: nothing.
  */
@@ -160,10 +163,12 @@ export function reach(chain: readonly string[], scope: Scope, separator: "." | "
     ? { members: fromOutside(qualifier.members), owner: qualifier.name, methodsOf: qualifier.methodsOf }
     : null;
   if (separator === "#") return rest.length === 0 && qualifier?.kind === "enumeration" ? named : null;
-  const step = (name: string, members: readonly Member[] | null): string | null => {
-    const deref = name.endsWith("^");
-    const bare = (deref ? name.slice(0, -1) : name).toUpperCase();
-    const type = members?.find((m) => m.kind !== "value" && m.name.toUpperCase() === bare)?.type ?? null;
+  // one part: a name, each `[...]` an element of its array, `^` what its reference points to
+  const step = (part: string, members: readonly Member[] | null): string | null => {
+    const [, name, indices, deref] = /^([A-Za-z_]\w*)((?:\[[^\]]*\])*)(\^?)$/.exec(part) ?? [];
+    let type = members?.find((m) => m.kind !== "value" && m.name.toUpperCase() === name?.toUpperCase())?.type ?? null;
+    for (let n = indices?.split("[").length ?? 1; type !== null && n > 1; n--)
+      type = ARRAY_TYPE.exec(type)?.[2] ?? null;
     return type !== null && deref ? referencedType(type) : type;
   };
   const variable = step(

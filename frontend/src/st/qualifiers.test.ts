@@ -304,3 +304,26 @@ describe("PROPERTYs after an instance, a program, THIS^. and SUPER^. (issue 25)"
     expect(labels(scopeOf(tank), "THIS^.")).toEqual(["fill", "Level", "Secret", "Guarded"]);
   });
 });
+
+describe("through an array element (issue 25: a[i]. of an ARRAY OF a STRUCT)", () => {
+  const scope = scopeIn(null, [
+    symbol("a", "ARRAY [1..3] OF Point"),
+    symbol("m", "ARRAY [1..2, 0..K] OF Point"),
+    symbol("refs", "ARRAY [0..1] OF REF_TO Point"),
+    symbol("nested", "ARRAY [0..1] OF ARRAY [0..1] OF Der"),
+    symbol("i", "INT"),
+  ]);
+
+  it("offers the element's members after each index, as many as the array has dimensions in one `[...]`", () => {
+    expect(labels(scope, "x := a[1].")).toEqual(["x", "y", "mode"]);
+    expect(labels(scope, "x := a[i].")).toEqual(["x", "y", "mode"]);
+    expect(labels(scope, "x := m[1, i].")).toEqual(["x", "y", "mode"]);
+    expect(labels(scope, "x := refs[0]^.")).toEqual(["x", "y", "mode"]);
+    expect(labels(scope, "nested[0][1].")).toEqual(["bi", "di", "bo", "Grow", "Describe"]);
+  });
+
+  it("offers nothing after the array itself or one index too many", () => {
+    expect(labels(scope, "x := a.")).toBeNull();
+    expect(labels(scope, "x := a[1][2].")).toBeNull();
+  });
+});

@@ -72,3 +72,27 @@ describe("operand autocomplete after a qualifier (issue 25: T1., Prog., Color., 
     expect(operandSuggestions("Color.", names).map((s) => s.name)).toEqual([]); // no `members`: plain names only
   });
 });
+
+describe("operand autocomplete after an array element (issue 25)", () => {
+  it("offers the element's members as whole operands", () => {
+    const scope: Scope = {
+      symbols: [symbol("a", "ARRAY [1..3] OF TON")],
+      library: [
+        {
+          name: "TON",
+          kind: "function_block",
+          source: "standard",
+          comment: null,
+          extensible: false,
+          inputs: [{ name: "IN", type: "BOOL" }],
+          in_outs: [],
+          outputs: [{ name: "Q", type: "BOOL" }],
+          return_type: null,
+        },
+      ],
+      structs: new Map(),
+    };
+    const members: MembersAfter = (chain, separator) => membersAfter(chain, scope, separator);
+    expect(operandSuggestions("a[2].", [], members).map((s) => s.name)).toEqual(["a[2].IN", "a[2].Q"]);
+  });
+});

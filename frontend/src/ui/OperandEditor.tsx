@@ -30,8 +30,11 @@ export function suggest<T extends { name: string }>(text: string, symbols: reado
   return hits.sort((a, b) => starts(a) - starts(b) || a.name.localeCompare(b.name)).slice(0, MAX_SUGGESTIONS);
 }
 
-/** A qualified operand being typed: the qualifier (`a.b`, `r^`, `Color`), its separator and what follows. */
-const QUALIFIED = /^\s*((?:[A-Za-z_][A-Za-z0-9_]*\^?\.)*[A-Za-z_][A-Za-z0-9_]*\^?)([.#])([A-Za-z0-9_]*)$/;
+/** One part of a qualifier: a name, indexed (`a[i]`, the index without a dot) or dereferenced (`r^`, `THIS^`). */
+export const QUALIFIER_PART = String.raw`[A-Za-z_][A-Za-z0-9_]*(?:\[[^\].[]*\])*\^?`;
+
+/** A qualified operand being typed: the qualifier (`a.b`, `a[1]`, `r^`, `Color`), its separator and what follows. */
+const QUALIFIED = new RegExp(String.raw`^\s*((?:${QUALIFIER_PART}\.)*${QUALIFIER_PART})([.#])([A-Za-z0-9_]*)$`);
 
 /** The suggestions for `text`: after a qualifier, the members whose name starts with what follows it (in their
  * order), each as the whole operand (`Color.Red`); else the symbols that `suggest` finds. */
