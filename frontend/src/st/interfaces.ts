@@ -2,8 +2,7 @@
 // interfaces), as what follows a variable of an interface's type: `itf.` offers its properties (read through GET,
 // written through SET) and its methods (and those of the interfaces it extends), as the checker accepts them.
 import type { LibraryEntry } from "../generated/api";
-import { tokenize } from "./language";
-import type { Member } from "./members";
+import { codeTokens, type Member } from "./members";
 import { declaredSymbols } from "./scope";
 
 export interface InterfaceType {
@@ -18,7 +17,7 @@ export interface InterfaceType {
 /** Upper-case interface name -> what a variable of it offers. */
 export type InterfaceTypes = ReadonlyMap<string, InterfaceType>;
 
-type Token = ReturnType<typeof tokenize>[number];
+type Token = ReturnType<typeof codeTokens>[number];
 
 /** A METHOD prototype from its tokens `METHOD name [: type] VAR... END_METHOD` (`from`: at METHOD). */
 function prototype(text: string, tokens: readonly Token[], from: number, to: number): LibraryEntry {
@@ -47,9 +46,7 @@ function prototype(text: string, tokens: readonly Token[], from: number, to: num
 
 /** The INTERFACEs of TYPE text, read from its tokens (comments and pragmas skipped). */
 export function interfaceTypes(text: string): InterfaceTypes {
-  const tokens = tokenize(text).filter(
-    (t) => t.style !== null && t.style !== "comment" && t.style !== "lineComment" && t.style !== "meta",
-  );
+  const tokens = codeTokens(text);
   const upper = (i: number) => tokens[i]?.text.toUpperCase() ?? "";
   const own = new Map<string, { name: string; bases: string[]; properties: Member[]; methods: LibraryEntry[] }>();
   for (let i = 0; i < tokens.length; i++) {

@@ -33,14 +33,19 @@ export type Qualifiers = ReadonlyMap<string, Qualifier>;
 /** Upper-case STRUCT type name -> its fields in declaration order. */
 export type StructTypes = ReadonlyMap<string, readonly Member[]>;
 
+/** The tokens of declaration text that are code: no space, comment or pragma. */
+export function codeTokens(text: string): ReturnType<typeof tokenize> {
+  return tokenize(text).filter(
+    (t) => t.style !== null && t.style !== "comment" && t.style !== "lineComment" && t.style !== "meta",
+  );
+}
+
 /**
  * The STRUCT types of TYPE text (`Point : STRUCT x, y : INT; END_STRUCT;`), read from its tokens so
  * comments are skipped. A field's type is its text up to `;` or `:=`; nested STRUCTs are not read.
  */
 export function structTypes(text: string): StructTypes {
-  const tokens = tokenize(text).filter(
-    (t) => t.style !== null && t.style !== "comment" && t.style !== "lineComment" && t.style !== "meta",
-  );
+  const tokens = codeTokens(text);
   const upper = (i: number) => tokens[i]?.text.toUpperCase();
   const types = new Map<string, Member[]>();
   for (let i = 2; i < tokens.length; i++) {

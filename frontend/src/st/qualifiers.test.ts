@@ -17,6 +17,7 @@ import { symbol } from "../test/symbols";
 const TYPES = `TYPE
     Color : (Red, Green := 5, Blue); (* a comment (x, y) *)
     Level : (Low, High) INT := Low;
+    Speed : INT (Slow := 1, Fast := 9); (* IEC's base type first *)
     Point : STRUCT x, y : INT; mode : (Fast, Slow); END_STRUCT;
     Small : INT (0..10);
 END_TYPE`;
@@ -84,6 +85,7 @@ describe("enumeration types from the TYPE text", () => {
     expect([...enumTypes(TYPES)].map(([name, values]) => [name, values.map((v) => `${v.name}:${v.type}`)])).toEqual([
       ["COLOR", ["Red:Color", "Green:Color", "Blue:Color"]],
       ["LEVEL", ["Low:Level", "High:Level"]],
+      ["SPEED", ["Slow:Speed", "Fast:Speed"]],
     ]);
   });
 });
@@ -123,9 +125,10 @@ describe("the names that qualify (issue 25: Prog and Color are words to complete
     expect(words(scopeIn(null))).toEqual([
       ["Color", "type", "enumeration", "(Red, Green, Blue)"],
       ["Level", "type", "enumeration", "(Low, High)"],
+      ["Speed", "type", "enumeration", "(Slow, Fast)"],
       ["Other", "namespace", "PROGRAM", undefined],
     ]);
-    expect(words(scopeIn(null, [symbol("other", "INT")]))?.map((w) => w[0])).toEqual(["Color", "Level"]);
+    expect(words(scopeIn(null, [symbol("other", "INT")]))?.map((w) => w[0])).toEqual(["Color", "Level", "Speed"]);
   });
 });
 

@@ -4,33 +4,32 @@
 // `Color.Red`, IEC's `Color#Red`), and inside a function block or program `THIS^` (all its variables) and
 // `SUPER^` (its base's). A named GVL's variables (`GVL_IO.x`) are one more entry of `qualifiers`.
 import type { Pou } from "../generated/api";
-import { tokenize } from "./language";
 import { interfaceTypes } from "./interfaces";
-import { structTypes, type Member, type Qualifier, type Qualifiers, type Scope } from "./members";
-import { lineage, withInherited } from "./scope";
-import { declaredSymbols } from "./scope";
+import { codeTokens, structTypes, type Member, type Qualifier, type Qualifiers, type Scope } from "./members";
+import { declaredSymbols, lineage, withInherited } from "./scope";
 
-/** Upper-case enumeration type name -> its values in declaration order (each of the enumeration's type). */
+/** Upper-case enumeration type name -> its values in declaration order (each of the enumeration's type): CODESYS's
+ * `E : (A, B) INT;` and IEC's `E : INT (A := 0, B);` too (not a subrange, `INT (0..9)`). */
 export function enumTypes(text: string): ReadonlyMap<string, readonly Member[]> {
-  const tokens = tokenize(text).filter(
-    (t) => t.style !== null && t.style !== "comment" && t.style !== "lineComment" && t.style !== "meta",
-  );
+  const tokens = codeTokens(text);
   const types = new Map<string, Member[]>();
   let depth = 0; // inside STRUCT ... END_STRUCT: a field's own `(A, B)` names no type
   for (let i = 0; i < tokens.length; i++) {
     const word = tokens[i]!.text.toUpperCase();
     if (word === "STRUCT") depth += 1;
     else if (word === "END_STRUCT") depth = Math.max(0, depth - 1);
-    if (depth || tokens[i]!.text !== "(" || tokens[i - 1]?.text !== ":" || !tokens[i - 2]) continue;
-    const type = tokens[i - 2]!.text;
+    if (depth || tokens[i]!.text !== "(") continue;
+    const based = tokens[i - 2]?.text === ":" && /^[A-Za-z_]/.test(tokens[i + 1]?.text ?? "");
+    const name = tokens[i - 1]?.text === ":" ? tokens[i - 2] : based ? tokens[i - 3] : undefined;
+    if (!name) continue;
     const values: Member[] = [];
     let j = i + 1;
     for (; j < tokens.length && tokens[j]!.text !== ")"; j++) {
       const previous = tokens[j - 1]!.text;
       if ((previous === "(" || previous === ",") && /^[A-Za-z_]\w*$/.test(tokens[j]!.text))
-        values.push({ name: tokens[j]!.text, type, kind: "value" });
+        values.push({ name: tokens[j]!.text, type: name.text, kind: "value" });
     }
-    types.set(type.toUpperCase(), values);
+    types.set(name.text.toUpperCase(), values);
     i = j;
   }
   return types;
