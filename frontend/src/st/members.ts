@@ -87,8 +87,9 @@ export interface Scope {
   qualifiers?: Qualifiers;
   /** The INTERFACEs of the TYPE text (interfaces.ts): what follows a variable of one. */
   interfaces?: InterfaceTypes;
-  /** Upper-case function block name -> the PROPERTYs another POU may use on its instances (qualifiers.ts). */
-  properties?: ReadonlyMap<string, readonly Member[]>;
+  /** Upper-case function block name -> what another POU may use of its instances besides its pins: its PUBLIC
+   * PROPERTYs, an SFC's steps and actions (qualifiers.ts). */
+  extras?: ReadonlyMap<string, readonly Member[]>;
 }
 
 /** The members of a type (FB pins or struct fields); null for a type without members. */
@@ -137,7 +138,7 @@ export interface Reached {
  * checker's ST-NOT-ACCESSIBLE, `THIS^.io` too). */
 const fromOutside = (members: readonly Member[]) => members.filter((m) => m.kind !== "VAR_IN_OUT");
 
-/** A type's members as an operand reaches them (an FB's pins and properties, an interface's properties and methods);
+/** A type's members as an operand reaches them (an FB's pins and `extras`, an interface's properties and methods);
  * a REFERENCE TO's target's (CODESYS dereferences it implicitly). */
 function reachType(type: string, scope: Scope): Reached | null {
   const target = /^\s*REFERENCE\s+TO\b/i.test(type) ? referencedType(type)! : type;
@@ -147,9 +148,9 @@ function reachType(type: string, scope: Scope): Reached | null {
   const members = membersOf(target, scope);
   if (members === null) return null;
   const fb = scope.library.some((e) => e.kind === "function_block" && e.name.toUpperCase() === upper);
-  const properties = scope.properties?.get(upper) ?? [];
+  const extras = scope.extras?.get(upper) ?? [];
   return {
-    members: [...fromOutside(members), ...properties],
+    members: [...fromOutside(members), ...extras],
     owner: target.trim(),
     methodsOf: fb ? target.trim() : null,
   };

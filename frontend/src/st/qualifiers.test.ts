@@ -11,7 +11,7 @@ import { memberCompletions, stCompletionSource, stCompletions } from "./completi
 import { membersAfter, structTypes, type Scope } from "./members";
 import { interfaceTypes } from "./interfaces";
 import { enumTypes, projectScope, qualifiers, withSelf } from "./qualifiers";
-import { withInherited, workingLibrary } from "./scope";
+import { chartSymbols, withInherited, workingLibrary } from "./scope";
 import { symbol } from "../test/symbols";
 
 const TYPES = `TYPE
@@ -328,5 +328,64 @@ describe("through an array element (issue 25: a[i]. of an ARRAY OF a STRUCT)", (
   it("offers nothing after the array itself or one index too many", () => {
     expect(labels(scope, "x := a.")).toBeNull();
     expect(labels(scope, "x := a[1][2].")).toBeNull();
+  });
+});
+
+describe("an SFC's steps and actions (issue 25; SFC-06: Wash.Idle.X, counter.Start.X, Fill.Q)", () => {
+  const stdFb = (name: string, input: [string, string], output: [string, string]): LibraryEntry => ({
+    ...method(name),
+    kind: "function_block",
+    source: "standard",
+    inputs: [{ name: input[0], type: input[1] }],
+    outputs: [{ name: output[0], type: output[1] }],
+  });
+  const library = [
+    stdFb("SFC_STEP", ["X", "BOOL"], ["T", "TIME"]),
+    stdFb("ACTION_CONTROL", ["Q", "BOOL"], ["A", "BOOL"]),
+  ];
+  const chart = (names: string[]) => ({
+    elements: names.flatMap((name, i) => [
+      { type: "step" as const, id: `s${i}`, name },
+      { type: "transition" as const, id: `t${i}`, condition: "TRUE" },
+    ]),
+  });
+  const wash: Pou = {
+    ...pou("Wash", "program", "VAR_OUTPUT q : BOOL; END_VAR\nVAR n : INT; END_VAR"),
+    language: "sfc",
+    body: { chart: chart(["Idle", "Run"]), actions: [{ name: "Fill", language: "st", body: "n := n + 1;" }] },
+  };
+  const seq: Pou = {
+    ...pou("Seq", "function_block", "VAR_OUTPUT done : BOOL; END_VAR"),
+    language: "sfc",
+    body: { chart: chart(["Start", "Stop"]) },
+  };
+  const scope: Scope = {
+    symbols: [symbol("s", "Seq"), ...chartSymbols(wash)],
+    library: [...library, ...workingLibrary([], [wash, seq])],
+    ...projectScope([wash, seq], ""),
+  };
+
+  it("reads the working chart's steps and actions as variables of the SFC POU", () => {
+    expect(chartSymbols(wash).map((s) => `${s.name}:${s.type}`)).toEqual([
+      "Idle:SFC_STEP",
+      "Run:SFC_STEP",
+      "Fill:ACTION_CONTROL",
+    ]);
+    expect(chartSymbols(OTHER)).toEqual([]);
+    expect(labels(scope, "IF Idle.")).toEqual(["X", "T"]);
+    expect(labels(scope, "IF Fill.")).toEqual(["Q", "A"]);
+  });
+
+  it("offers them after a program's name and an FB instance, then their flags", () => {
+    const at = completer(scope);
+    expect(at("b := Wash.")?.options.map((o) => [o.label, o.info])).toEqual([
+      ["q", "VAR_OUTPUT of Wash"],
+      ["Idle", "STEP of Wash"],
+      ["Run", "STEP of Wash"],
+      ["Fill", "ACTION of Wash"],
+    ]);
+    expect(labels(scope, "b := Wash.Idle.")).toEqual(["X", "T"]);
+    expect(labels(scope, "b := s.")).toEqual(["done", "Start", "Stop"]);
+    expect(labels(scope, "b := s.Start.")).toEqual(["X", "T"]);
   });
 });

@@ -6,7 +6,7 @@
 import type { Pou } from "../generated/api";
 import { interfaceTypes } from "./interfaces";
 import { codeTokens, structTypes, type Member, type Qualifier, type Qualifiers, type Scope } from "./members";
-import { declaredSymbols, lineage, withInherited } from "./scope";
+import { chartSymbols, declaredSymbols, lineage, withInherited } from "./scope";
 
 /** Upper-case enumeration type name -> its values in declaration order (each of the enumeration's type): CODESYS's
  * `E : (A, B) INT;` and IEC's `E : INT (A := 0, B);` too (not a subrange, `INT (0..9)`). */
@@ -57,12 +57,27 @@ export function propertiesOf(pou: Pou, pous: readonly Pou[], from: UsedFrom): Me
   return found;
 }
 
-/** A program's members seen from another POU: its inputs and outputs, its PUBLIC properties. */
+/** The steps and actions of an SFC POU's chart (`Wash.Idle.X`, `counter.Start.X`, `Fill.Q`), as members. */
+function chartMembers(pou: Pou): Member[] {
+  return chartSymbols(pou).map((s) => ({
+    name: s.name,
+    type: s.type,
+    kind: s.type === "SFC_STEP" ? "STEP" : "ACTION",
+  }));
+}
+
+/** What another POU uses of an instance of `pou` besides its pins: its PUBLIC properties, its chart's steps and
+ * actions. */
+function outsideExtras(pou: Pou, pous: readonly Pou[]): Member[] {
+  return [...propertiesOf(pou, pous, "outside"), ...chartMembers(pou)];
+}
+
+/** A program's members seen from another POU: its inputs and outputs, PUBLIC properties, steps and actions. */
 function programMembers(pou: Pou): Member[] {
   const variables = (declaredSymbols(pou.declarations ?? "") ?? [])
     .filter((s) => s.var_class === "VAR_INPUT" || s.var_class === "VAR_OUTPUT")
     .map((s) => ({ name: s.name, type: s.type, kind: s.var_class }));
-  return [...variables, ...propertiesOf(pou, [], "outside")];
+  return [...variables, ...outsideExtras(pou, [])];
 }
 
 /** The project's qualifiers: its enumeration types, then its programs (a program hides a type of its name, as in
@@ -113,20 +128,20 @@ export function withSelf(found: Qualifiers, pou: Pou, pous: readonly Pou[]): Qua
 }
 
 /** What the project's TYPE text and POUs give a scope besides its variables and library: the STRUCTs, the
- * INTERFACEs, the qualifiers and the function blocks' PROPERTYs. */
+ * INTERFACEs, the qualifiers and what the function blocks' instances have besides their pins. */
 export function projectScope(
   pous: readonly Pou[],
   types: string,
-): Required<Pick<Scope, "structs" | "interfaces" | "qualifiers" | "properties">> {
-  const properties = new Map(
+): Required<Pick<Scope, "structs" | "interfaces" | "qualifiers" | "extras">> {
+  const extras = new Map(
     pous
       .filter((p) => p.kind === "function_block")
-      .map((fb) => [fb.name.toUpperCase(), propertiesOf(fb, pous, "outside")] as const),
+      .map((fb) => [fb.name.toUpperCase(), outsideExtras(fb, pous)] as const),
   );
   return {
     structs: structTypes(types),
     interfaces: interfaceTypes(types),
     qualifiers: qualifiers(pous, types),
-    properties,
+    extras,
   };
 }

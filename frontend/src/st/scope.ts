@@ -5,6 +5,7 @@
 import { parseDeclarations } from "../iec/declarations";
 import type { LibraryEntry, SymbolInfo, SymbolTable } from "../generated/api";
 import type { Pou } from "../generated/api";
+import { chartStates } from "../sfc/model";
 import { structTypes, type Scope } from "./members";
 
 /** The POU's own symbols from its declaration text, or null when the text does not read as a table. */
@@ -53,6 +54,21 @@ export function workingLibrary(library: readonly LibraryEntry[], pous: readonly 
   });
   const replaced = new Set(working.map((e) => e.name.toUpperCase()));
   return [...library.filter((e) => !replaced.has(e.name.toUpperCase())), ...working];
+}
+
+/** The steps and actions of an SFC POU's working chart, as the variables its code reads (`Idle.X`, `Fill.Q`:
+ * SFC-06); none for another POU. */
+export function chartSymbols(pou: Pou): SymbolInfo[] {
+  const body = pou.language === "sfc" && typeof pou.body === "object" && "chart" in pou.body ? pou.body : null;
+  return (body ? chartStates(body) : []).map((s) => ({
+    ...s,
+    var_class: "VAR",
+    initial: null,
+    address: null,
+    comment: null,
+    retain: false,
+    constant: false,
+  }));
 }
 
 export function stScope(

@@ -8,7 +8,7 @@ import { useWorkspace } from "../store/project";
 import { memberCompletions, stCompletions, type StCompletions } from "./completion";
 import type { Scope } from "./members";
 import { projectScope, withSelf } from "./qualifiers";
-import { stScope, withInherited, workingLibrary } from "./scope";
+import { chartSymbols, stScope, withInherited, workingLibrary } from "./scope";
 import { useLiveCheck } from "../store/useLiveCheck";
 
 export function useStAssist(pou: Pou): { diagnostics: Diagnostic[]; completions: StCompletions; scope: Scope } {
@@ -21,9 +21,13 @@ export function useStAssist(pou: Pou): { diagnostics: Diagnostic[]; completions:
   const library = useMemo(() => workingLibrary(saved, pous ?? []), [saved, pous]);
   const diagnostics = useLiveCheck(project);
   // a function block's instance holds the variables of the FBs it EXTENDS too; programs, enumerations, THIS^ and
-  // SUPER^ qualify members; an interface variable has its interface's
+  // SUPER^ qualify members; an interface variable has its interface's; an SFC's steps and actions are variables
   const scope = useMemo(() => {
-    const inherited = withInherited(stScope(table, declarations, types, library), pou, pous ?? []);
+    const own = stScope(table, declarations, types, library);
+    const chart = chartSymbols(pou).filter(
+      (s) => !own.symbols.some((o) => o.name.toUpperCase() === s.name.toUpperCase()),
+    );
+    const inherited = withInherited({ ...own, symbols: [...chart, ...own.symbols] }, pou, pous ?? []);
     const project = projectScope(pous ?? [], types);
     return { ...inherited, ...project, qualifiers: withSelf(project.qualifiers, pou, pous ?? []) };
   }, [table, declarations, types, library, pou, pous]);
