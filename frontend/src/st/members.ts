@@ -157,9 +157,9 @@ function reachType(type: string, scope: Scope): Reached | null {
 }
 
 /**
- * What `a.b.` reaches (`a^.b.`, `a[i].b.` and `THIS^.` too): a variable's chain as its types say, else the members of the
- * qualifier it starts with (a program's inputs and outputs, an enumeration's values); with "#", an enumeration's
- * `Color#`. Null: nothing.
+ * What `a.b.` reaches (`a^.b.`, `a[i].b.` and `THIS^.` too): a variable's chain as its types say, else the members
+ * of the qualifier it starts with (a program's inputs and outputs, an enumeration's values); with "#", an
+ * enumeration's `Color#`. Null: nothing.
  */
 export function reach(chain: readonly string[], scope: Scope, separator: "." | "#" = "."): Reached | null {
   const [head, ...rest] = chain;

@@ -117,7 +117,7 @@ describe("after a program's name (issue 25: Prog.x from another POU)", () => {
 });
 
 describe("the names that qualify (issue 25: Prog and Color are words to complete too)", () => {
-  it("offers the programs and enumeration types among the words, after the variables; not those a variable hides", () => {
+  it("offers the programs and enumeration types as words after the variables, but those a variable hides", () => {
     const words = (scope: Scope) =>
       completer(scope)("x := C")
         ?.options.filter((o) => o.type === "namespace" || (o.type === "type" && o.detail === "enumeration"))
@@ -301,7 +301,7 @@ describe("PROPERTYs after an instance, a program, THIS^. and SUPER^. (issue 25)"
     expect(completer(scopeOf(null))("t.")?.options.at(-1)?.info).toBe("PROPERTY of BigTank");
   });
 
-  it("offers the own PRIVATE and the inherited PROTECTED ones after THIS^., the base's non-PRIVATE after SUPER^.", () => {
+  it("offers own PRIVATE and inherited PROTECTED ones after THIS^., the base's non-PRIVATE after SUPER^.", () => {
     expect(labels(scopeOf(big), "THIS^.")).toEqual(["fill", "extra", "Room", "Level", "Guarded"]);
     expect(labels(scopeOf(big), "SUPER^.")).toEqual(["fill", "Level", "Guarded"]);
     expect(labels(scopeOf(tank), "THIS^.")).toEqual(["fill", "Level", "Secret", "Guarded"]);

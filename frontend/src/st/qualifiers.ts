@@ -1,8 +1,9 @@
-// The names other than variables that an operand qualifies (members.ts `reach`/`membersAfter` read them): a
-// PROGRAM's inputs and outputs (`Prog.x`: another POU writes its inputs and reads its outputs, as the checker
-// allows; its in-outs and internal variables are ST-NOT-ACCESSIBLE), an enumeration type's values (CODESYS's
-// `Color.Red`, IEC's `Color#Red`), and inside a function block or program `THIS^` (all its variables) and
-// `SUPER^` (its base's). A named GVL's variables (`GVL_IO.x`) are one more entry of `qualifiers`.
+// The names other than variables that an operand qualifies (members.ts `reach`/`membersAfter` read them), with
+// what follows each as the checker allows it: a PROGRAM's inputs and outputs (`Prog.x`: another POU writes its
+// inputs and reads its outputs; its in-outs and internal variables are ST-NOT-ACCESSIBLE), PUBLIC properties, SFC
+// steps and actions; an enumeration type's values (CODESYS's `Color.Red`, IEC's `Color#Red`); inside a function
+// block or program `THIS^` (all its variables) and `SUPER^` (its base's). A named GVL (`GVL_IO.x`) is one more
+// entry that `qualifiers` makes, with its variables as members.
 import type { Pou } from "../generated/api";
 import { interfaceTypes } from "./interfaces";
 import { codeTokens, structTypes, type Member, type Qualifier, type Qualifiers, type Scope } from "./members";
@@ -41,7 +42,7 @@ type UsedFrom = "outside" | "own" | "derived";
 
 /** The PROPERTYs of `pou` and those it inherits, each once (the nearest: an override), that code `from` where may
  * use (the checker's check_access: PRIVATE in the FB's own code only, PROTECTED in derived FBs' too). */
-export function propertiesOf(pou: Pou, pous: readonly Pou[], from: UsedFrom): Member[] {
+function propertiesOf(pou: Pou, pous: readonly Pou[], from: UsedFrom): Member[] {
   const found: Member[] = [];
   lineage(pou, pous).forEach((owner, depth) => {
     for (const p of owner.properties ?? []) {
@@ -115,8 +116,7 @@ export function withSelf(found: Qualifiers, pou: Pou, pous: readonly Pou[]): Qua
   if (pou.kind !== "function_block" && pou.kind !== "program") return found;
   const self = new Map(found);
   self.set("THIS^", { name: "THIS^", kind: "THIS^", members: instanceMembers(pou, pous, "own"), methodsOf: pou.name });
-  const name = pou.extends?.trim().toUpperCase();
-  const base = name ? pous.find((p) => p.kind === "function_block" && p.name.toUpperCase() === name) : undefined;
+  const base = lineage(pou, pous)[1];
   if (base)
     self.set("SUPER^", {
       name: "SUPER^",
