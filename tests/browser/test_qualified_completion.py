@@ -26,7 +26,22 @@ PROJECT = {
             "name": "Main",
             "kind": "program",
             "language": "st",
-            "declarations": "VAR\n    c : Color;\n    n : INT;\nEND_VAR",
+            "declarations": "VAR\n    c : Color;\n    n : INT;\n    d : Der;\nEND_VAR",
+            "body": "",
+        },
+        {
+            "name": "Base",
+            "kind": "function_block",
+            "language": "st",
+            "declarations": "VAR_INPUT\n    bi : INT;\nEND_VAR\nVAR_OUTPUT\n    bo : INT;\nEND_VAR\nVAR\n    bv : INT;\nEND_VAR",
+            "body": "bo := bi + bv;",
+        },
+        {
+            "name": "Der",
+            "kind": "function_block",
+            "language": "st",
+            "extends": "Base",
+            "declarations": "VAR_INPUT\n    di : INT;\nEND_VAR\nVAR\n    dv : INT;\nEND_VAR",
             "body": "",
         },
         {
@@ -101,6 +116,37 @@ def test_st_completion_after_a_program_and_an_enumeration(page, server: str) -> 
     page.get_by_text("All changes saved").wait_for()
     assert errors(server) == []
     body.locator(".cm-lintRange").wait_for(state="detached")
+
+
+def test_st_completion_through_extends_this_and_super(page, server: str) -> None:
+    """An instance of an FB with EXTENDS offers its base's pins too; THIS^. all the instance's variables, SUPER^. the
+    base's (the checker accepts `THIS^.bv`, internal, in the FB's own code)."""
+    store_project(server, PROJECT)
+    page.goto(server)
+    open_pou(page, "qualified", "Main")
+    body = page.get_by_label("Main body")
+    body.wait_for()
+    body.focus()
+    page.keyboard.type("n := d.")
+    assert st_options(page, 3) == ["bi", "di", "bo"]
+    pick(page, "bo")
+    page.keyboard.type(";")
+
+    open_pou(page, "qualified", "Der")
+    body = page.get_by_label("Der body")
+    body.wait_for()
+    body.focus()
+    page.keyboard.type("dv := THIS^.")
+    assert st_options(page, 5) == ["bi", "bo", "bv", "di", "dv"]
+    pick(page, "bv")
+    page.keyboard.type(" + SUPER^.")
+    assert st_options(page, 3) == ["bi", "bo", "bv"]
+    pick(page, "bi")
+    page.keyboard.type(";")
+    assert body.inner_text() == "dv := THIS^.bv + SUPER^.bi;"
+    page.keyboard.press("Control+s")
+    page.get_by_text("All changes saved").wait_for()
+    assert errors(server) == []
 
 
 def test_ld_and_fbd_operand_editors_after_a_program_and_an_enumeration(page, server: str) -> None:
