@@ -71,8 +71,8 @@ export function stCompletions(
 function projectNames(project: Pick<Scope, "interfaces" | "qualifiers">, symbols: SymbolInfo[]): Completion[] {
   const hidden = new Set(symbols.map((s) => s.name.toUpperCase()));
   const named = [...(project.qualifiers?.values() ?? [])].flatMap((q): Completion[] =>
-    q.kind === "PROGRAM"
-      ? [{ label: q.name, type: "namespace", detail: "PROGRAM" }]
+    q.kind === "PROGRAM" || q.kind === "PLANT"
+      ? [{ label: q.name, type: "namespace", detail: q.kind }]
       : q.kind === "enumeration"
         ? [{ label: q.name, type: "type", detail: "enumeration", info: `(${q.members.map((m) => m.name).join(", ")})` }]
         : [],

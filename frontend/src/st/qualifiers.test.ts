@@ -111,6 +111,17 @@ describe("after a program's name (issue 25: Prog.x from another POU)", () => {
     expect(labels(scopeIn(null), "Other.hidden.")).toBeNull();
   });
 
+  it("offers a plant's inputs and outputs, not its properties and methods (ST-PLANT)", () => {
+    const plant = pou("Tank", "plant", "VAR_INPUT i : INT; END_VAR\nVAR_OUTPUT level : INT; END_VAR", {
+      properties: [{ name: "Full", type: "BOOL", get: { declarations: "", body: "" } }],
+    });
+    const scope = { ...scopeIn(null), qualifiers: qualifiers([plant], ""), library: [method("Tank.Drain")] };
+    expect(completer(scope)("x := Tank.")?.options.map((o) => [o.label, o.info])).toEqual([
+      ["i", "VAR_INPUT of Tank"],
+      ["level", "VAR_OUTPUT of Tank"],
+    ]);
+  });
+
   it("is hidden by a variable of its name, as in the checker", () => {
     expect(labels(scopeIn(null, [symbol("Other", "INT")]), "Other.")).toBeNull();
   });

@@ -73,27 +73,28 @@ function outsideExtras(pou: Pou, pous: readonly Pou[]): Member[] {
   return [...propertiesOf(pou, pous, "outside"), ...chartMembers(pou)];
 }
 
-/** A program's members seen from another POU: its inputs and outputs, PUBLIC properties, steps and actions. */
+/** A program's members seen from another POU: its inputs and outputs, PUBLIC properties, steps and actions; a
+ * plant's properties are its own (ST-PLANT). */
 function programMembers(pou: Pou): Member[] {
   const variables = (declaredSymbols(pou.declarations ?? "") ?? [])
     .filter((s) => s.var_class === "VAR_INPUT" || s.var_class === "VAR_OUTPUT")
     .map((s) => ({ name: s.name, type: s.type, kind: s.var_class }));
-  return [...variables, ...outsideExtras(pou, [])];
+  return [...variables, ...(pou.kind === "plant" ? chartMembers(pou) : outsideExtras(pou, []))];
 }
 
-/** The project's qualifiers: its enumeration types, then its programs (a program hides a type of its name, as in
- * the checker). */
+/** The project's qualifiers: its enumeration types, then its programs and plants (a program hides a type of its
+ * name, as in the checker; a plant's methods are its own, ST-PLANT). */
 export function qualifiers(pous: readonly Pou[], types: string): Map<string, Qualifier> {
   const found = new Map<string, Qualifier>();
   for (const [name, values] of enumTypes(types))
     found.set(name, { name: values[0]?.type ?? name, kind: "enumeration", members: values, methodsOf: null });
   for (const pou of pous)
-    if (pou.kind === "program")
+    if (pou.kind === "program" || pou.kind === "plant")
       found.set(pou.name.toUpperCase(), {
         name: pou.name,
-        kind: "PROGRAM",
+        kind: pou.kind === "program" ? "PROGRAM" : "PLANT",
         members: programMembers(pou),
-        methodsOf: pou.name,
+        methodsOf: pou.kind === "program" ? pou.name : null,
       });
   return found;
 }
