@@ -110,7 +110,7 @@ export function memberCompletions(
   const reached = reach(chain, scope, separator);
   if (!reached) return null;
   const { members, owner } = reached;
-  const methods = reached.methodsOf ? methodsOf(reached.methodsOf, scope) : [];
+  const methods = reached.methods ?? (reached.methodsOf ? methodsOf(reached.methodsOf, scope) : []);
   if (members.length === 0 && methods.length === 0) return null;
   // Boosted in declaration order, so the list reads like the FB's interface (inputs first), not alphabetically.
   const boost = (i: number) => -Math.min(i, 99);

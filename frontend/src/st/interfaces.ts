@@ -3,7 +3,7 @@
 // written through SET) and its methods (and those of the interfaces it extends), as the checker accepts them.
 import type { LibraryEntry } from "../generated/api";
 import { codeTokens, type Member } from "./members";
-import { declaredSymbols } from "./scope";
+import { callable, declaredSymbols } from "./scope";
 
 export interface InterfaceType {
   /** As declared. */
@@ -29,19 +29,7 @@ function prototype(text: string, tokens: readonly Token[], from: number, to: num
   const returns =
     tokens[i + 1]?.text === ":" && end > i + 2 ? text.slice(tokens[i + 2]!.from, tokens[end - 1]!.to) : null;
   const symbols = vars < 0 ? [] : (declaredSymbols(text.slice(tokens[vars]!.from, tokens[to]!.from)) ?? []);
-  const pins = (varClass: string) =>
-    symbols.filter((s) => s.var_class === varClass).map((s) => ({ name: s.name, type: s.type }));
-  return {
-    name,
-    kind: "function",
-    source: "user",
-    inputs: pins("VAR_INPUT"),
-    outputs: pins("VAR_OUTPUT"),
-    in_outs: pins("VAR_IN_OUT"),
-    extensible: false,
-    return_type: returns?.trim().replace(/;$/, "").trim() || null,
-    comment: null,
-  };
+  return callable(name, "function", symbols, returns?.trim().replace(/;$/, "").trim() || null);
 }
 
 /** The INTERFACEs of TYPE text, read from its tokens (comments and pragmas skipped). */

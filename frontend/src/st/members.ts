@@ -25,6 +25,8 @@ export interface Qualifier {
   members: readonly Member[];
   /** The function block or program whose methods may be called on it; null: none (an enumeration). */
   methodsOf: string | null;
+  /** The methods called on it, when not those of `methodsOf` in the library (THIS^: PRIVATE ones too). */
+  methods?: readonly LibraryEntry[];
 }
 
 /** Upper-case name (`PROG`, `COLOR`, `THIS^`) -> what it qualifies (qualifiers.ts builds it). */
@@ -126,12 +128,14 @@ export function referencedType(type: string): string | null {
   return /^\s*(?:REF_TO|REFERENCE\s+TO|POINTER\s+TO)\s+(.+?)\s*$/i.exec(type)?.[1] ?? null;
 }
 
-/** What an operand may reach after `chain.`: the members and whose methods it may call (owner: as described). */
+/** What an operand may reach after `chain.`: the members and the methods it may call (those of `methodsOf` in the
+ * library, unless `methods` lists them). */
 export interface Reached {
   members: readonly Member[];
   /** The type or name the members belong to, for the completion's description. */
   owner: string;
   methodsOf: string | null;
+  methods?: readonly LibraryEntry[];
 }
 
 /** Members an operand may name: not an in-out, which stands for the caller's variable during a call only (the
@@ -165,9 +169,7 @@ export function reach(chain: readonly string[], scope: Scope, separator: "." | "
   const [head, ...rest] = chain;
   if (!head) return null;
   const qualifier = scope.qualifiers?.get(head.toUpperCase());
-  const named = qualifier
-    ? { members: fromOutside(qualifier.members), owner: qualifier.name, methodsOf: qualifier.methodsOf }
-    : null;
+  const named = qualifier ? { ...qualifier, members: fromOutside(qualifier.members), owner: qualifier.name } : null;
   if (separator === "#") return rest.length === 0 && qualifier?.kind === "enumeration" ? named : null;
   // one part: a name, each `[...]` an element of its array, `^` what its reference points to
   const step = (part: string, members: readonly Member[] | null): string | null => {

@@ -38,13 +38,24 @@ VAR_OUTPUT done : BOOL; at : Point; END_VAR
 VAR_IN_OUT io : INT; END_VAR
 VAR hidden : INT; END_VAR
 VAR_TEMP t : INT; END_VAR`,
+  { methods: [{ name: "Reset" }, { name: "Log", access: "PRIVATE", declarations: "VAR_INPUT m : INT; END_VAR" }] },
 );
 const BASE = pou(
   "Base",
   "function_block",
   "VAR_INPUT bi : INT; END_VAR\nVAR_OUTPUT bo : INT; END_VAR\nVAR bv : INT; END_VAR",
+  {
+    methods: [
+      { name: "Describe", return_type: "INT" },
+      { name: "Check", access: "PROTECTED" },
+      { name: "Secret", access: "PRIVATE" },
+    ],
+  },
 );
-const DER = pou("Der", "function_block", "VAR_INPUT di : INT; END_VAR\nVAR dv : INT; END_VAR", { extends: "Base" });
+const DER = pou("Der", "function_block", "VAR_INPUT di : INT; END_VAR\nVAR dv : INT; END_VAR", {
+  extends: "Base",
+  methods: [{ name: "Grow" }, { name: "Describe", return_type: "INT" }],
+});
 const POUS = [OTHER, BASE, DER, pou("Twice", "function", "VAR_INPUT a : INT; END_VAR", { return_type: "INT" })];
 
 const method = (name: string): LibraryEntry => ({
@@ -178,24 +189,28 @@ describe("after an enumeration type's name (issue 25: CODESYS Color.Red, IEC Col
 
 describe("THIS^. and SUPER^. in a function block (issue 25)", () => {
   it("offers all the instance's variables (inherited ones too) and its methods after THIS^.", () => {
+    // the methods of the working copy: its own (PRIVATE ones too), the inherited but PRIVATE (check_access)
     const result = completer(scopeIn(DER))("THIS^.");
-    expect(result?.options.map((o) => [o.label, o.info])).toEqual([
-      ["bi", "VAR_INPUT of THIS^"],
-      ["bo", "VAR_OUTPUT of THIS^"],
-      ["bv", "VAR of THIS^"],
-      ["di", "VAR_INPUT of THIS^"],
-      ["dv", "VAR of THIS^"],
-      ["Grow", "METHOD of THIS^"],
-      ["Describe", "METHOD of THIS^"],
+    expect(result?.options.map((o) => [o.label, o.detail, o.info])).toEqual([
+      ["bi", "INT", "VAR_INPUT of THIS^"],
+      ["bo", "INT", "VAR_OUTPUT of THIS^"],
+      ["bv", "INT", "VAR of THIS^"],
+      ["di", "INT", "VAR_INPUT of THIS^"],
+      ["dv", "INT", "VAR of THIS^"],
+      ["Grow", "()", "METHOD of THIS^"],
+      ["Describe", "() : INT", "METHOD of THIS^"],
+      ["Check", "()", "METHOD of THIS^"],
     ]);
+    expect(labels(scopeIn(BASE), "THIS^.")).toEqual(["bi", "bo", "bv", "Describe", "Check", "Secret"]);
   });
 
   it("offers the base's variables and methods after SUPER^., and neither outside a function block or program", () => {
-    expect(labels(scopeIn(DER), "x := SUPER^.")).toEqual(["bi", "bo", "bv", "Describe"]);
+    expect(labels(scopeIn(DER), "x := SUPER^.")).toEqual(["bi", "bo", "bv", "Describe", "Check"]);
     expect(labels(scopeIn(BASE), "SUPER^.")).toBeNull(); // Base extends nothing
     expect(labels(scopeIn(POUS[3]!), "THIS^.")).toBeNull(); // a function
     // the checker: `THIS^.io` is ST-NOT-ACCESSIBLE (an in-out), `THIS^.hidden` and `THIS^.t` are accepted
-    expect(labels(scopeIn(OTHER), "THIS^.")).toEqual(["k", "done", "at", "hidden", "t", "Reset"]);
+    expect(labels(scopeIn(OTHER), "THIS^.")).toEqual(["k", "done", "at", "hidden", "t", "Reset", "Log"]);
+    expect(completer(scopeIn(OTHER))("THIS^.")?.options.at(-1)?.apply).toBe("Log(m := )");
   });
 });
 

@@ -4,10 +4,10 @@
 // steps and actions; an enumeration type's values (CODESYS's `Color.Red`, IEC's `Color#Red`); inside a function
 // block or program `THIS^` (all its variables) and `SUPER^` (its base's). A named GVL (`GVL_IO.x`) is one more
 // entry that `qualifiers` makes, with its variables as members.
-import type { Pou } from "../generated/api";
+import type { LibraryEntry, Pou } from "../generated/api";
 import { interfaceTypes } from "./interfaces";
 import { codeTokens, structTypes, type Member, type Qualifier, type Qualifiers, type Scope } from "./members";
-import { chartSymbols, declaredSymbols, lineage, withInherited } from "./scope";
+import { callable, chartSymbols, declaredSymbols, lineage, withInherited } from "./scope";
 
 /** Upper-case enumeration type name -> its values in declaration order (each of the enumeration's type): CODESYS's
  * `E : (A, B) INT;` and IEC's `E : INT (A := 0, B);` too (not a subrange, `INT (0..9)`). */
@@ -40,23 +40,38 @@ export function enumTypes(text: string): ReadonlyMap<string, readonly Member[]> 
  * derived from it (`SUPER^`). */
 type UsedFrom = "outside" | "own" | "derived";
 
-/** The PROPERTYs of `pou` and those it inherits, each once (the nearest: an override), that code `from` where may
- * use (the checker's check_access: PRIVATE in the FB's own code only, PROTECTED in derived FBs' too). */
-function propertiesOf(pou: Pou, pous: readonly Pou[], from: UsedFrom): Member[] {
-  const found: Member[] = [];
+/** The members of kind `which` (PROPERTYs, METHODs) of `pou` and those it inherits, each once (the nearest: an
+ * override), that code `from` where may use (the checker's check_access: PRIVATE in the FB's own code only,
+ * PROTECTED in derived FBs' too). */
+function usable<T extends { name: string; access?: string }>(
+  pou: Pou,
+  pous: readonly Pou[],
+  from: UsedFrom,
+  which: (owner: Pou) => readonly T[] | undefined,
+): T[] {
+  const found: T[] = [];
   lineage(pou, pous).forEach((owner, depth) => {
-    for (const p of owner.properties ?? []) {
-      const access = p.access ?? "PUBLIC";
+    for (const member of which(owner) ?? []) {
+      const access = member.access ?? "PUBLIC";
       const allowed =
         access === "PUBLIC" ||
         access === "INTERNAL" ||
         (from !== "outside" && (access === "PROTECTED" || (depth === 0 && from === "own")));
-      if (allowed && !found.some((f) => f.name.toUpperCase() === p.name.toUpperCase()))
-        found.push({ name: p.name, type: p.type, kind: "PROPERTY" });
+      if (allowed && !found.some((f) => f.name.toUpperCase() === member.name.toUpperCase())) found.push(member);
     }
   });
   return found;
 }
+
+const propertiesOf = (pou: Pou, pous: readonly Pou[], from: UsedFrom): Member[] =>
+  usable(pou, pous, from, (owner) => owner.properties).map((p) => ({ name: p.name, type: p.type, kind: "PROPERTY" }));
+
+/** The METHODs code `from` where calls on an instance of `pou` (from the working copy, as ST completion offers
+ * them). */
+const methodsOf = (pou: Pou, pous: readonly Pou[], from: UsedFrom): LibraryEntry[] =>
+  usable(pou, pous, from, (owner) => owner.methods).map((m) =>
+    callable(m.name, "function", declaredSymbols(m.declarations ?? "") ?? [], m.return_type ?? null),
+  );
 
 /** The steps and actions of an SFC POU's chart (`Wash.Idle.X`, `counter.Start.X`, `Fill.Q`), as members. */
 function chartMembers(pou: Pou): Member[] {
@@ -116,14 +131,21 @@ function instanceMembers(pou: Pou, pous: readonly Pou[], from: UsedFrom): Member
 export function withSelf(found: Qualifiers, pou: Pou, pous: readonly Pou[]): Qualifiers {
   if (pou.kind !== "function_block" && pou.kind !== "program") return found;
   const self = new Map(found);
-  self.set("THIS^", { name: "THIS^", kind: "THIS^", members: instanceMembers(pou, pous, "own"), methodsOf: pou.name });
+  self.set("THIS^", {
+    name: "THIS^",
+    kind: "THIS^",
+    members: instanceMembers(pou, pous, "own"),
+    methodsOf: null,
+    methods: methodsOf(pou, pous, "own"),
+  });
   const base = lineage(pou, pous)[1];
   if (base)
     self.set("SUPER^", {
       name: "SUPER^",
       kind: "SUPER^",
       members: instanceMembers(base, pous, "derived"),
-      methodsOf: base.name,
+      methodsOf: null,
+      methods: methodsOf(base, pous, "derived"),
     });
   return self;
 }

@@ -24,6 +24,28 @@ export function declaredSymbols(declarations: string): SymbolInfo[] | null {
   }));
 }
 
+/** A function block, function or method as the library describes it: its parameters from its `symbols`. */
+export function callable(
+  name: string,
+  kind: LibraryEntry["kind"],
+  symbols: readonly SymbolInfo[],
+  returns: string | null,
+): LibraryEntry {
+  const pins = (varClass: string) =>
+    symbols.filter((s) => s.var_class === varClass).map((s) => ({ name: s.name, type: s.type }));
+  return {
+    name,
+    kind,
+    source: "user",
+    inputs: pins("VAR_INPUT"),
+    outputs: pins("VAR_OUTPUT"),
+    in_outs: pins("VAR_IN_OUT"),
+    extensible: false,
+    return_type: returns,
+    comment: null,
+  };
+}
+
 /**
  * The library with each function block of the working copy described by its current declarations
  * (an FB created or changed since the last save), its base's pins first (EXTENDS, as the checker lists them); an
@@ -35,19 +57,9 @@ export function workingLibrary(library: readonly LibraryEntry[], pous: readonly 
     const own = pou.kind === "function_block" ? declaredSymbols(pou.declarations ?? "") : null;
     if (!own) return [];
     const symbols = withInherited({ symbols: own, library: [], structs: new Map() }, pou, pous).symbols;
-    const pins = (varClass: string) =>
-      symbols.filter((s) => s.var_class === varClass).map((s) => ({ name: s.name, type: s.type }));
     return [
       {
-        name: pou.name,
-        kind: "function_block",
-        source: "user",
-        inputs: pins("VAR_INPUT"),
-        outputs: pins("VAR_OUTPUT"),
-        in_outs: pins("VAR_IN_OUT"),
-        extensible: false,
-        return_type: null,
-        comment: null,
+        ...callable(pou.name, "function_block", symbols, null),
         methods: saved.get(pou.name.toUpperCase())?.methods ?? [], // as saved: methods are not in the declarations
       },
     ];
