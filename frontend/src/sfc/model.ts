@@ -99,15 +99,6 @@ const allCharts = (body: ActionChartBody): Sequence[] => [
   ...actionCharts(body),
 ];
 
-/** The implicit variables of an SFC POU that code reads (SFC-06, docs/sfc.md): each step of its chart an SFC_STEP
- * (`S.X`, `S.T`), each action an ACTION_CONTROL (`A.Q`, `A.A`). */
-export function chartStates(body: SfcBody): { name: string; type: string }[] {
-  const steps = [...walk(chartOf(body))].flatMap(({ element }) =>
-    kindOf(element) === "step" ? [{ name: (element as SfcStep).name, type: "SFC_STEP" }] : [],
-  );
-  return [...steps, ...(body.actions ?? []).map((a) => ({ name: a.name, type: "ACTION_CONTROL" }))];
-}
-
 /** Every id of the POU's charts (elements and associations): new ones must differ. */
 export function usedIds(body: SfcBody): Set<string> {
   const ids = new Set<string>();

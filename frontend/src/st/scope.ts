@@ -4,8 +4,7 @@
 // copy's function blocks in their current form; the STRUCT types.
 import { parseDeclarations } from "../iec/declarations";
 import type { LibraryEntry, SymbolInfo, SymbolTable } from "../generated/api";
-import type { Pou } from "../generated/api";
-import { chartStates } from "../sfc/model";
+import type { Pou, SfcBody } from "../generated/api";
 import { structTypes, type Scope } from "./members";
 
 /** The POU's own symbols from its declaration text, or null when the text does not read as a table. */
@@ -68,11 +67,22 @@ export function workingLibrary(library: readonly LibraryEntry[], pous: readonly 
   return [...library.filter((e) => !replaced.has(e.name.toUpperCase())), ...working];
 }
 
-/** The steps and actions of an SFC POU's working chart, as the variables its code reads (`Idle.X`, `Fill.Q`:
- * SFC-06); none for another POU. */
+type ChartElement = NonNullable<NonNullable<SfcBody["chart"]>["elements"]>[number];
+
+/** The step names of a chart's elements, down its branches (a step is the element with a name). */
+const stepNames = (elements: readonly ChartElement[]): string[] =>
+  elements.flatMap((e) => ("branches" in e ? e.branches.flatMap(stepNames) : "name" in e ? [e.name] : []));
+
+/** The implicit variables of an SFC POU's working chart that code reads (SFC-06, docs/sfc.md): each step of its
+ * chart an SFC_STEP (`Idle.X`, `Idle.T`), each action an ACTION_CONTROL (`Fill.Q`, `Fill.A`); none for another
+ * POU. */
 export function chartSymbols(pou: Pou): SymbolInfo[] {
   const body = pou.language === "sfc" && typeof pou.body === "object" && "chart" in pou.body ? pou.body : null;
-  return (body ? chartStates(body) : []).map((s) => ({
+  const states = [
+    ...stepNames(body?.chart?.elements ?? []).map((name) => ({ name, type: "SFC_STEP" })),
+    ...(body?.actions ?? []).map((a) => ({ name: a.name, type: "ACTION_CONTROL" })),
+  ];
+  return states.map((s) => ({
     ...s,
     var_class: "VAR",
     initial: null,
