@@ -8,8 +8,7 @@
 import type { Completion, CompletionContext, CompletionResult } from "@codemirror/autocomplete";
 import type { LibraryEntry, SymbolInfo } from "../generated/api";
 import { ALIASES, DECLARABLE_TYPES, KEYWORDS } from "../iec/vocabulary";
-import { reach, type Scope } from "./members";
-import { QUALIFIER_PART as PART } from "../ui/OperandEditor";
+import { QUALIFIER_PART as PART, reach, type Scope } from "./members";
 
 /** The formal call of `entry` by `callee` (a function name or an FB instance). */
 export function callTemplate(callee: string, entry: LibraryEntry): string {

@@ -120,6 +120,9 @@ export function typeOfChain(chain: readonly string[], scope: Scope): string | nu
   return type;
 }
 
+/** One part of a qualifier: a name, indexed (`a[i]`, the index without a dot) or dereferenced (`r^`, `THIS^`). */
+export const QUALIFIER_PART = String.raw`[A-Za-z_][A-Za-z0-9_]*(?:\[[^\].[]*\])*\^?`;
+
 /** `ARRAY [bounds] OF element`: the bounds' text and the element type. */
 export const ARRAY_TYPE = /^\s*ARRAY\s*\[([^\]]*)\]\s*OF\s+(.+?)\s*$/i;
 

@@ -1,13 +1,11 @@
 // A text field for an operand, with autocomplete from the POU's symbols and the globals, and after a qualifier
-// (`T1.`, `Prog.`, `Color.`, `Color#`) from its members, as the editor's `members` finds them.
+// (`T1.`, `Prog.`, `Color.`, `Color#`) from its members, as the editor's `members` gives them.
 import { useEffect, useMemo, useRef, useState, type CSSProperties } from "react";
 import type { SymbolInfo } from "../generated/api";
 
-/** What may follow a qualifier in an operand (`chain.`, or `Type#`); null: nothing (st/members.ts membersAfter). */
-export type MembersAfter = (
-  chain: readonly string[],
-  separator: "." | "#",
-) => readonly { name: string; type: string }[] | null;
+/** The suggestions for a qualified operand being typed (`T1.`, `Prog.`, `Color#`: st/operandScope.ts), as whole
+ * operands; null: the text is no such operand. */
+export type MembersAfter = (text: string) => readonly { name: string; type: string }[] | null;
 
 export interface OperandEditorProps {
   label: string;
@@ -28,30 +26,6 @@ export function suggest<T extends { name: string }>(text: string, symbols: reado
   const hits = symbols.filter((s) => s.name.toUpperCase().includes(needle) && s.name.toUpperCase() !== needle);
   const starts = (s: T) => (s.name.toUpperCase().startsWith(needle) ? 0 : 1);
   return hits.sort((a, b) => starts(a) - starts(b) || a.name.localeCompare(b.name)).slice(0, MAX_SUGGESTIONS);
-}
-
-/** One part of a qualifier: a name, indexed (`a[i]`, the index without a dot) or dereferenced (`r^`, `THIS^`). */
-export const QUALIFIER_PART = String.raw`[A-Za-z_][A-Za-z0-9_]*(?:\[[^\].[]*\])*\^?`;
-
-/** A qualified operand being typed: the qualifier (`a.b`, `a[1]`, `r^`, `Color`), its separator and what follows. */
-const QUALIFIED = new RegExp(String.raw`^\s*((?:${QUALIFIER_PART}\.)*${QUALIFIER_PART})([.#])([A-Za-z0-9_]*)$`);
-
-/** The suggestions for `text`: after a qualifier, the members whose name starts with what follows it (in their
- * order), each as the whole operand (`Color.Red`); else the symbols that `suggest` finds. */
-export function operandSuggestions(
-  text: string,
-  symbols: readonly SymbolInfo[],
-  members?: MembersAfter,
-): { name: string; type: string }[] {
-  const qualified = members ? QUALIFIED.exec(text) : null;
-  if (!qualified) return suggest(text, symbols);
-  const qualifier = qualified[1]!;
-  const separator = qualified[2] === "#" ? "#" : ".";
-  const needle = qualified[3]!.toUpperCase();
-  return (members!(qualifier.split("."), separator) ?? [])
-    .filter((m) => m.name.toUpperCase().startsWith(needle) && m.name.toUpperCase() !== needle)
-    .slice(0, MAX_SUGGESTIONS)
-    .map((m) => ({ name: `${qualifier}${separator}${m.name}`, type: m.type }));
 }
 
 /** The suggestion highlighted before the user picks one: the first, if it starts with the typed text
@@ -77,7 +51,10 @@ export function OperandEditor({
 }: OperandEditorProps) {
   const [text, setText] = useState(initial);
   const [active, setActive] = useState(-1);
-  const list = useMemo(() => operandSuggestions(text, suggestions, members), [text, suggestions, members]);
+  const list = useMemo(
+    () => members?.(text)?.slice(0, MAX_SUGGESTIONS) ?? suggest(text, suggestions),
+    [text, suggestions, members],
+  );
   // Until the user picks with the arrows, a suggestion that starts with the typed text is highlighted,
   // and Enter or Tab take it (as IDE completion does): typing "Mo" + Enter gives "Motor".
   const highlighted = active >= 0 ? active : defaultSuggestion(text, list, suggestions);
