@@ -440,7 +440,7 @@ const pouNamed = (project: Project | null, name: string) =>
 function LdPouView({ pou, history }: { pou: Pou; history: History<LdBody> }) {
   const name = pou.name;
   const setLdHistory = useWorkspace((s) => s.setLdHistory);
-  const { library, symbols, symbolsLoaded, diagnostics, focus, declare } = useDiagramPou(name);
+  const { library, symbols, symbolsLoaded, diagnostics, members, focus, declare } = useDiagramPou(name);
   const live = useLdOnline(pou, history.present, symbolsLoaded ? symbols : null, library);
   const stepping = useLdDebugging(name, history.present);
   const covered = useTests((s) => coverageOf(s.coverage, name));
@@ -455,6 +455,7 @@ function LdPouView({ pou, history }: { pou: Pou; history: History<LdBody> }) {
       onHistoryChange={(h) => setLdHistory(name, h)}
       library={library}
       symbols={symbols}
+      members={members}
       diagnostics={diagnostics}
       onDeclareVariable={declare}
       online={live.online}

@@ -25,7 +25,7 @@ export function FbdPouView({
 }) {
   const name = pou.name;
   const setHistory = useWorkspace((s) => s.setFbdHistory);
-  const { library, symbols, symbolsLoaded, diagnostics, focus, declare } = useDiagramPou(name);
+  const { library, symbols, symbolsLoaded, diagnostics, members, focus, declare } = useDiagramPou(name);
   const byName = useMemo(() => new Map(library.map((e) => [e.name.toUpperCase(), e])), [library]);
   const lookup = useCallback((call: string) => byName.get(call.toUpperCase()), [byName]);
   const body = history.present;
@@ -57,6 +57,7 @@ export function FbdPouView({
       onHistoryChange={(h) => setHistory(name, h)}
       library={library}
       symbols={symbols}
+      members={members}
       diagnostics={diagnostics}
       online={live.online}
       readOnly={live.readOnly}

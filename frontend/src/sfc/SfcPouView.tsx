@@ -22,6 +22,8 @@ import { StEditor, type StEditorProps } from "../st/StEditor";
 import { accumulatorMarks } from "../st/ilOnline";
 import { IL_OPERATOR_COMPLETIONS } from "../st/ilLanguage";
 import { useStAssist } from "../st/useStAssist";
+import { useOperandMembers } from "../st/useOperandMembers";
+import type { MembersAfter } from "../ui/OperandEditor";
 import { actionChartOf, type ActionChartBody, type SfcBody } from "./model";
 import { bindSfc, sfcOnlineView } from "./online";
 import { setPartBody } from "./ops";
@@ -271,6 +273,7 @@ function PartEditor(props: {
   const library = useWorkspace((s) => s.library);
   const table = useWorkspace((s) => s.symbols[pou.name]);
   const symbols = useMemo(() => (table ? [...table.symbols, ...table.globals] : []), [table]);
+  const members = useOperandMembers(symbols);
   const [histories, setHistories] = useState<Record<string, History<LdBody | FbdBody>>>({});
   const il = item.language === "il";
   const text = typeof item.body === "string" ? item.body : "";
@@ -312,6 +315,7 @@ function PartEditor(props: {
     diagnostics: mine,
     library,
     symbols: table ? symbols : null,
+    members,
     readOnly: props.readOnly,
     histories,
     setHistories,
@@ -368,6 +372,7 @@ interface DiagramPart {
   diagnostics: Diagnostic[];
   library: LibraryEntry[];
   symbols: SymbolInfo[] | null;
+  members: MembersAfter;
   readOnly: string | null;
   histories: Record<string, History<LdBody | FbdBody>>;
   setHistories(
@@ -392,6 +397,7 @@ function LdPart(props: DiagramPart & { content: LdBody; breakpoints: Record<stri
       }}
       library={props.library}
       symbols={props.symbols ?? []}
+      members={props.members}
       diagnostics={props.diagnostics}
       readOnly={props.readOnly}
       online={live.online}
@@ -434,6 +440,7 @@ function FbdPart(
       }}
       library={library}
       symbols={props.symbols ?? []}
+      members={props.members}
       diagnostics={props.diagnostics}
       readOnly={props.readOnly}
       online={live.online}

@@ -17,7 +17,7 @@ import { valueTagClass } from "../online/ValueTag";
 import { formatValue } from "../online/values";
 import { partBits } from "../iec/vocabulary";
 import { tokenize } from "./language";
-import { membersOf, typeOfChain, type Scope } from "./members";
+import { ARRAY_TYPE, membersOf, typeOfChain, type Scope } from "./members";
 
 /** An array element `a[i, 2]`: each index (a variable's path or a number) and the array's lower bounds. */
 export interface ElementAccess {
@@ -74,11 +74,9 @@ function partAfter(
   return { suffix: `.%${letter}${index}`, type: partType, last: named ? dot + 2 : dot + 1 };
 }
 
-const ARRAY = /^\s*ARRAY\s*\[([^\]]*)\]\s*OF\s+(.+?)\s*$/i;
-
 /** An array type's lower bounds and element type, when its bounds are numbers. */
 function arrayOf(type: string): { lows: number[]; element: string } | null {
-  const match = ARRAY.exec(type);
+  const match = ARRAY_TYPE.exec(type);
   if (!match) return null;
   const lows = match[1]!.split(",").map((d) => Number(d.split("..")[0]!.trim()));
   return lows.every(Number.isInteger) ? { lows, element: match[2]! } : null;

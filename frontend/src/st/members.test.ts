@@ -1,9 +1,10 @@
 import { CompletionContext } from "@codemirror/autocomplete";
 import { EditorState } from "@codemirror/state";
 import { describe, expect, it } from "vitest";
-import type { LibraryEntry } from "../generated/api";
+import type { LibraryEntry, Pou } from "../generated/api";
 import { memberCompletions, stCompletionSource, stCompletions } from "./completion";
 import { membersOf, structTypes, typeOfChain, type Scope } from "./members";
+import { qualifiers } from "./qualifiers";
 import { declaredSymbols, stScope, workingLibrary } from "./scope";
 import { symbol } from "../test/symbols";
 
@@ -105,7 +106,7 @@ describe("member resolution", () => {
 describe("member autocomplete (issue 9: FB instance members, struct fields)", () => {
   const source = stCompletionSource(() => ({
     options: stCompletions([...scope.symbols], [...scope.library]),
-    members: (chain) => memberCompletions(chain, scope),
+    members: (chain, separator) => memberCompletions(chain, scope, separator),
   }));
   const at = (doc: string) => source(new CompletionContext(EditorState.create({ doc }), doc.length, false));
 
@@ -120,10 +121,11 @@ describe("member autocomplete (issue 9: FB instance members, struct fields)", ()
     ]);
   });
 
-  it("offers a user FB's parameters and completes the word typed after the dot", () => {
+  it("offers a user FB's inputs and outputs and completes the word typed after the dot", () => {
     const result = at("IF C1.Co");
     expect(result?.from).toBe(6);
-    expect(result?.options.map((o) => o.label)).toEqual(["Enable", "Total", "Count"]);
+    // not the in-out Total: the checker refuses `C1.Total` (ST-NOT-ACCESSIBLE, it is the caller's during a call only)
+    expect(result?.options.map((o) => o.label)).toEqual(["Enable", "Count"]);
   });
 
   it("offers struct fields, also down a chain", () => {
@@ -203,10 +205,16 @@ describe("methods after `inst.` and `Prog.` (issue 25: CODESYS calls a program's
     fn("Tallyho.Other", [], [], null), // another program's, whose name only starts like it
     ABS,
   ];
-  const methodScope: Scope = { symbols: [symbol("C1", "Counter")], library, structs: new Map() };
+  const tally: Pou = { name: "Tally", kind: "program", language: "st", declarations: "", body: "" };
+  const methodScope: Scope = {
+    symbols: [symbol("C1", "Counter")],
+    library,
+    structs: new Map(),
+    qualifiers: qualifiers([tally], ""),
+  };
   const source = stCompletionSource(() => ({
     options: stCompletions([...methodScope.symbols], library),
-    members: (chain) => memberCompletions(chain, methodScope),
+    members: (chain, separator) => memberCompletions(chain, methodScope, separator),
   }));
   const at = (doc: string) => source(new CompletionContext(EditorState.create({ doc }), doc.length, false));
 
@@ -214,15 +222,14 @@ describe("methods after `inst.` and `Prog.` (issue 25: CODESYS calls a program's
     const result = at("x := tally.");
     expect(result?.from).toBe(11);
     expect(result?.options.map((o) => [o.label, o.type, o.detail, o.apply, o.info])).toEqual([
-      ["Add", "method", "(k: INT) : INT", "Add(k := , twice => )", "METHOD of tally"],
-      ["Clear", "method", "()", "Clear()", "METHOD of tally"],
+      ["Add", "method", "(k: INT) : INT", "Add(k := , twice => )", "METHOD of Tally"],
+      ["Clear", "method", "()", "Clear()", "METHOD of Tally"],
     ]);
   });
 
   it("offers an FB instance's methods after its pins", () => {
     expect(at("C1.")?.options.map((o) => [o.label, o.type])).toEqual([
       ["Enable", "property"],
-      ["Total", "property"],
       ["Count", "property"],
       ["Reset", "method"],
     ]);

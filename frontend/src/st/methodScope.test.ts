@@ -2,7 +2,8 @@ import { describe, expect, it } from "vitest";
 import type { LibraryEntry, Pou } from "../generated/api";
 import { variableOccurrences } from "./inlineValues";
 import { structTypes, type Scope } from "./members";
-import { ownNames, withInherited } from "./methodScope";
+import { ownNames } from "./methodScope";
+import { withInherited } from "./scope";
 import { symbol } from "../test/symbols";
 
 const base: Pou = {

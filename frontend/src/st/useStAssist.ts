@@ -7,8 +7,8 @@ import type { Pou } from "../generated/api";
 import { useWorkspace } from "../store/project";
 import { memberCompletions, stCompletions, type StCompletions } from "./completion";
 import type { Scope } from "./members";
-import { stScope, workingLibrary } from "./scope";
-import { withInherited } from "./methodScope";
+import { projectScope, withSelf } from "./qualifiers";
+import { chartSymbols, stScope, withInherited, workingLibrary } from "./scope";
 import { useLiveCheck } from "../store/useLiveCheck";
 
 export function useStAssist(pou: Pou): { diagnostics: Diagnostic[]; completions: StCompletions; scope: Scope } {
@@ -20,15 +20,21 @@ export function useStAssist(pou: Pou): { diagnostics: Diagnostic[]; completions:
   const pous = project?.pous;
   const library = useMemo(() => workingLibrary(saved, pous ?? []), [saved, pous]);
   const diagnostics = useLiveCheck(project);
-  // a function block's instance holds the variables of the FBs it EXTENDS too
-  const scope = useMemo(
-    () => withInherited(stScope(table, declarations, types, library), pou, pous ?? []),
-    [table, declarations, types, library, pou, pous],
-  );
+  // a function block's instance holds the variables of the FBs it EXTENDS too; programs, enumerations, THIS^ and
+  // SUPER^ qualify members; an interface variable has its interface's; an SFC's steps and actions are variables
+  const scope = useMemo(() => {
+    const own = stScope(table, declarations, types, library);
+    const chart = chartSymbols(pou).filter(
+      (s) => !own.symbols.some((o) => o.name.toUpperCase() === s.name.toUpperCase()),
+    );
+    const inherited = withInherited({ ...own, symbols: [...chart, ...own.symbols] }, pou, pous ?? []);
+    const project = projectScope(pous ?? [], types);
+    return { ...inherited, ...project, qualifiers: withSelf(project.qualifiers, pou, pous ?? []) };
+  }, [table, declarations, types, library, pou, pous]);
   const completions = useMemo(
     (): StCompletions => ({
-      options: stCompletions([...scope.symbols], library),
-      members: (chain) => memberCompletions(chain, scope),
+      options: stCompletions([...scope.symbols], library, scope),
+      members: (chain, separator) => memberCompletions(chain, scope, separator),
     }),
     [scope, library],
   );

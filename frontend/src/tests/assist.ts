@@ -7,8 +7,8 @@ import type { Completion } from "@codemirror/autocomplete";
 import type { Diagnostic, LibraryEntry, SymbolInfo } from "../generated/api";
 import type { Project } from "../generated/api";
 import { memberCompletions, stCompletions, type StCompletions } from "../st/completion";
-import { structTypes } from "../st/members";
 import { tokenize } from "../st/language";
+import { projectScope } from "../st/qualifiers";
 import { declaredSymbols, workingLibrary } from "../st/scope";
 import { CHECK_DELAY_MS } from "../store/useLiveCheck";
 import { useWorkspace } from "../store/project";
@@ -70,10 +70,12 @@ export function useTestCompletions(project: Project | null, text = ""): StComple
         constant: false,
       }));
     const symbols = [...testLocals(text), ...programs, ...globals];
-    const scope = { symbols, library, structs: structTypes(project.types ?? "") };
+    const types = project.types ?? "";
+    // the programs are variables here (all their variables as members); the enumerations qualify their values
+    const scope = { symbols, library, ...projectScope([], types) };
     return {
-      options: [...verbCompletions, ...stCompletions([...scope.symbols], library)],
-      members: (chain: readonly string[]) => memberCompletions(chain, scope),
+      options: [...verbCompletions, ...stCompletions([...scope.symbols], library, scope)],
+      members: (chain: readonly string[], separator: "." | "#") => memberCompletions(chain, scope, separator),
     };
   }, [project, text, saved, tables]);
 }

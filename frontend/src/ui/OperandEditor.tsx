@@ -1,11 +1,18 @@
-// A text field for an operand, with autocomplete from the POU's symbols and the globals.
+// A text field for an operand, with autocomplete from the POU's symbols and the globals, and after a qualifier
+// (`T1.`, `Prog.`, `Color.`, `Color#`) from its members, as the editor's `members` gives them.
 import { useEffect, useMemo, useRef, useState, type CSSProperties } from "react";
 import type { SymbolInfo } from "../generated/api";
+
+/** The suggestions for a qualified operand being typed (`T1.`, `Prog.`, `Color#`: st/operandScope.ts), as whole
+ * operands; null: the text is no such operand. */
+export type MembersAfter = (text: string) => readonly { name: string; type: string }[] | null;
 
 export interface OperandEditorProps {
   label: string;
   initial: string;
   suggestions?: readonly SymbolInfo[];
+  /** The members offered after a qualifier; none: only the plain names are offered. */
+  members?: MembersAfter;
   style?: CSSProperties;
   onCommit(text: string): void;
   onCancel(): void;
@@ -33,10 +40,21 @@ export function defaultSuggestion(
   return list[0]?.name.toUpperCase().startsWith(needle) ? 0 : -1;
 }
 
-export function OperandEditor({ label, initial, suggestions = [], style, onCommit, onCancel }: OperandEditorProps) {
+export function OperandEditor({
+  label,
+  initial,
+  suggestions = [],
+  members,
+  style,
+  onCommit,
+  onCancel,
+}: OperandEditorProps) {
   const [text, setText] = useState(initial);
   const [active, setActive] = useState(-1);
-  const list = useMemo(() => suggest(text, suggestions), [text, suggestions]);
+  const list = useMemo(
+    () => members?.(text)?.slice(0, MAX_SUGGESTIONS) ?? suggest(text, suggestions),
+    [text, suggestions, members],
+  );
   // Until the user picks with the arrows, a suggestion that starts with the typed text is highlighted,
   // and Enter or Tab take it (as IDE completion does): typing "Mo" + Enter gives "Motor".
   const highlighted = active >= 0 ? active : defaultSuggestion(text, list, suggestions);

@@ -20,7 +20,7 @@ import { MenuList, type MenuItem } from "../../ui/MenuList";
 import { instanceName, symbolNames, type VariableDeclaration } from "../../ld/editor/declare";
 import { EditorNotices } from "../../ld/editor/EditorNotices";
 import type { LdOnlineActions } from "../../online/operandCommands";
-import { OperandEditor } from "../../ui/OperandEditor";
+import { OperandEditor, type MembersAfter } from "../../ui/OperandEditor";
 import type { LastClip } from "../../ui/systemClipboard";
 import { useEditorRoot, type KeyHandlers } from "../../ui/useEditorRoot";
 import { OperandValuePrompt, type ValueRequest } from "../../online/ValuePrompt";
@@ -99,6 +99,8 @@ export interface FbdEditorProps {
   onHistoryChange(history: History<FbdBody>): void;
   library?: readonly LibraryEntry[];
   symbols?: readonly SymbolInfo[];
+  /** What a variable node's autocomplete offers after a qualifier (`T1.`, `Prog.`, `Color.`). */
+  members?: MembersAfter;
   diagnostics?: readonly Diagnostic[];
   online?: FbdOnlineView;
   readOnly?: string | null;
@@ -163,6 +165,7 @@ export function FbdEditor({
   onHistoryChange,
   library = NO_LIBRARY,
   symbols = NO_SYMBOLS,
+  members,
   diagnostics = NO_DIAGNOSTICS,
   online,
   readOnly = null,
@@ -505,6 +508,7 @@ export function FbdEditor({
   const api: FbdEditorApi = {
     readOnly: locked,
     symbols,
+    members,
     online,
     editing,
     view,

@@ -117,6 +117,7 @@ function TextField({
           label={label}
           initial={text}
           suggestions={NAMES_VARIABLE.has(kindOf(node)) ? api.symbols : []}
+          members={NAMES_VARIABLE.has(kindOf(node)) ? api.members : undefined}
           onCommit={(t) => api.commitEdit(node.id, t)}
           onCancel={api.cancelEdit}
         />

@@ -2,6 +2,7 @@
 // data holds only the model node (nodes re-render when the editor's state changes).
 import { createContext, useContext, type MouseEvent } from "react";
 import type { Diagnostic, SymbolInfo } from "../../generated/api";
+import type { MembersAfter } from "../../ui/OperandEditor";
 import type { FbdNetwork, FbdNode, NodePins } from "../model";
 import type { FbdOnlineView } from "../online";
 
@@ -21,6 +22,8 @@ export interface NodeView {
 export interface FbdEditorApi {
   readOnly: boolean;
   symbols: readonly SymbolInfo[];
+  /** What a variable node's autocomplete offers after a qualifier. */
+  members?: MembersAfter;
   online?: FbdOnlineView;
   /** The node whose text is being edited. */
   editing: string | null;

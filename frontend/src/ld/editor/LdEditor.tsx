@@ -38,7 +38,7 @@ import type { MenuItem } from "../../ui/MenuList";
 import { IlView } from "./IlView";
 import { declareOffer, instanceName, symbolNames, type VariableDeclaration } from "./declare";
 import { extend, navigate, type Direction } from "./navigation";
-import { OperandEditor } from "../../ui/OperandEditor";
+import { OperandEditor, type MembersAfter } from "../../ui/OperandEditor";
 import { setDraggedOperand } from "./dragOperand";
 import { EditorNotices } from "./EditorNotices";
 import type { LastClip } from "../../ui/systemClipboard";
@@ -75,6 +75,8 @@ export interface LdEditorProps {
   library?: readonly LibraryEntry[];
   /** The POU's symbols and the globals, for autocomplete and the declare offer. */
   symbols?: readonly SymbolInfo[];
+  /** What operand autocomplete offers after a qualifier (`T1.`, `Prog.`, `Color.`); none: plain names only. */
+  members?: MembersAfter;
   diagnostics?: readonly Diagnostic[];
   online?: OnlineView;
   /** Editing is off (online); the reason is shown. */
@@ -145,6 +147,7 @@ export function LdEditor({
   onHistoryChange,
   library = NO_LIBRARY,
   symbols = NO_SYMBOLS,
+  members,
   diagnostics,
   online,
   readOnly = null,
@@ -508,6 +511,7 @@ export function LdEditor({
         label={fieldLabel(editing.field)}
         initial={operandText(body, editing.id, editing.field)}
         suggestions={editing.field.kind === "target" ? [] : symbols}
+        members={editing.field.kind === "target" ? undefined : members}
         style={{ left: editing.x, top: editing.y }}
         onCommit={(text) => commitOperand(editing.id, editing.field, text)}
         onCancel={() => {
