@@ -118,6 +118,43 @@ def test_st_completion_after_a_program_and_an_enumeration(page, server: str) -> 
     body.locator(".cm-lintRange").wait_for(state="detached")
 
 
+def test_st_completion_after_a_global_variable_lists_name(page, server: str) -> None:
+    """After a named GVL's name its variables, after an instance in it the FB's pins; what is picked compiles (a
+    qualified_only list's variables are used qualified)."""
+    store_project(
+        server,
+        {
+            **PROJECT,
+            "gvls": [
+                {
+                    "name": "GVL_IO",
+                    "qualified_only": True,
+                    "text": "VAR_GLOBAL\n    bStart : BOOL;\n    tOn : TON;\nEND_VAR",
+                }
+            ],
+        },
+    )
+    page.goto(server)
+    open_pou(page, "qualified", "Main")
+    body = page.get_by_label("Main body")
+    body.wait_for()
+    body.focus()
+    page.keyboard.type("GVL_IO.")
+    assert st_options(page, 2) == ["bStart", "tOn"]
+    pick(page, "tOn")
+    page.keyboard.type("(IN := GVL_IO.bS")
+    assert st_options(page, 1) == ["bStart"]
+    pick(page, "bStart")
+    page.keyboard.type(", PT := T#1s);\nGVL_IO.bStart := GVL_IO.tOn.")
+    assert st_options(page, 4) == ["IN", "PT", "Q", "ET"]
+    pick(page, "Q")
+    page.keyboard.type(";")
+    assert body.inner_text() == "GVL_IO.tOn(IN := GVL_IO.bStart, PT := T#1s);\nGVL_IO.bStart := GVL_IO.tOn.Q;"
+    page.keyboard.press("Control+s")
+    page.get_by_text("All changes saved").wait_for()
+    assert errors(server) == []
+
+
 def test_st_completion_through_extends_this_and_super(page, server: str) -> None:
     """An instance of an FB with EXTENDS offers its base's pins too; THIS^. all the instance's variables, SUPER^. the
     base's (the checker accepts `THIS^.bv`, internal, in the FB's own code)."""

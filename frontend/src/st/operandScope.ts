@@ -2,7 +2,7 @@
 // completion offers (members.ts `membersAfter`), over the POU's symbols and the working copy's function blocks,
 // STRUCTs, INTERFACEs, enumerations and programs, as whole operands. Loaded when an operand is first edited
 // (useOperandMembers.ts): it reads declarations with the ST tokenizer, which the app's opening scripts leave out.
-import type { LibraryEntry, Pou, SymbolInfo } from "../generated/api";
+import type { GlobalVariableList, LibraryEntry, Pou, SymbolInfo } from "../generated/api";
 import type { MembersAfter } from "../ui/OperandEditor";
 import { QUALIFIER_PART, membersAfter, type Scope } from "./members";
 import { projectScope } from "./qualifiers";
@@ -29,7 +29,8 @@ export function operandMembers(
   library: readonly LibraryEntry[],
   pous: readonly Pou[],
   types: string,
+  gvls: readonly GlobalVariableList[] = [],
 ): MembersAfter {
-  const scope: Scope = { symbols, library: workingLibrary(library, pous), ...projectScope(pous, types) };
+  const scope: Scope = { symbols, library: workingLibrary(library, pous), ...projectScope(pous, types, gvls) };
   return (text) => qualifiedSuggestions(text, scope);
 }

@@ -415,3 +415,32 @@ describe("an SFC's steps and actions (issue 25; SFC-06: Wash.Idle.X, counter.Sta
     expect(labels(scope, "b := s.Start.")).toEqual(["X", "T"]);
   });
 });
+
+describe("a named global variable list's variables after its name (GVL_IO.x, issue 25)", () => {
+  const gvls = [
+    { name: "GVL_IO", qualified_only: true, text: "VAR_GLOBAL\n    bStart : BOOL;\n    tOn : TON;\nEND_VAR" },
+  ];
+  const ton: LibraryEntry = {
+    ...method("TON"),
+    kind: "function_block",
+    inputs: [
+      { name: "IN", type: "BOOL" },
+      { name: "PT", type: "TIME" },
+    ],
+    outputs: [
+      { name: "Q", type: "BOOL" },
+      { name: "ET", type: "TIME" },
+    ],
+  };
+
+  it("offers the list's variables, and the pins of an instance in it", () => {
+    const scope: Scope = { symbols: [], library: [ton], ...projectScope([], "", gvls) };
+    expect(labels(scope, "x := GVL_IO.")).toEqual(["bStart", "tOn"]);
+    expect(labels(scope, "x := GVL_IO.tOn.")).toEqual(["IN", "PT", "Q", "ET"]);
+  });
+
+  it("lets a variable of the list's name hide it, as the checker does", () => {
+    const scope: Scope = { symbols: [symbol("GVL_IO", "TON")], library: [ton], ...projectScope([], "", gvls) };
+    expect(labels(scope, "x := GVL_IO.")).toEqual(["IN", "PT", "Q", "ET"]);
+  });
+});

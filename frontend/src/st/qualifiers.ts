@@ -4,7 +4,7 @@
 // steps and actions; an enumeration type's values (CODESYS's `Color.Red`, IEC's `Color#Red`); inside a function
 // block or program `THIS^` (all its variables) and `SUPER^` (its base's). A named GVL (`GVL_IO.x`) is one more
 // entry that `qualifiers` makes, with its variables as members.
-import type { LibraryEntry, Pou } from "../generated/api";
+import type { GlobalVariableList, LibraryEntry, Pou } from "../generated/api";
 import { interfaceTypes } from "./interfaces";
 import { codeTokens, structTypes, type Member, type Qualifier, type Qualifiers, type Scope } from "./members";
 import { callable, chartSymbols, declaredSymbols, lineage, withInherited } from "./scope";
@@ -97,10 +97,22 @@ function programMembers(pou: Pou): Member[] {
   return [...variables, ...(pou.kind === "plant" ? chartMembers(pou) : outsideExtras(pou, []))];
 }
 
-/** The project's qualifiers: its enumeration types, then its programs and plants (a program hides a type of its
+/** The project's qualifiers: its named global variable lists (`GVL_IO.x`; the checker refuses a list named like a
+ * POU or type, ST-DUPLICATE), its enumeration types, then its programs and plants (a program hides a type of its
  * name, as in the checker; a plant's methods are its own, ST-PLANT). */
-export function qualifiers(pous: readonly Pou[], types: string): Map<string, Qualifier> {
+export function qualifiers(
+  pous: readonly Pou[],
+  types: string,
+  gvls: readonly GlobalVariableList[] = [],
+): Map<string, Qualifier> {
   const found = new Map<string, Qualifier>();
+  for (const list of gvls)
+    found.set(list.name.toUpperCase(), {
+      name: list.name,
+      kind: "GVL",
+      members: (declaredSymbols(list.text ?? "") ?? []).map((s) => ({ name: s.name, type: s.type, kind: s.var_class })),
+      methodsOf: null,
+    });
   for (const [name, values] of enumTypes(types))
     found.set(name, { name: values[0]?.type ?? name, kind: "enumeration", members: values, methodsOf: null });
   for (const pou of pous)
@@ -150,11 +162,12 @@ export function withSelf(found: Qualifiers, pou: Pou, pous: readonly Pou[]): Qua
   return self;
 }
 
-/** What the project's TYPE text and POUs give a scope besides its variables and library: the STRUCTs, the
- * INTERFACEs, the qualifiers and what the function blocks' instances have besides their pins. */
+/** What the project's TYPE text, POUs and global variable lists give a scope besides its variables and library:
+ * the STRUCTs, the INTERFACEs, the qualifiers and what the function blocks' instances have besides their pins. */
 export function projectScope(
   pous: readonly Pou[],
   types: string,
+  gvls: readonly GlobalVariableList[] = [],
 ): Required<Pick<Scope, "structs" | "interfaces" | "qualifiers" | "extras">> {
   const extras = new Map(
     pous
@@ -164,7 +177,7 @@ export function projectScope(
   return {
     structs: structTypes(types),
     interfaces: interfaceTypes(types),
-    qualifiers: qualifiers(pous, types),
+    qualifiers: qualifiers(pous, types, gvls),
     extras,
   };
 }

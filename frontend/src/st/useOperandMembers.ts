@@ -17,12 +17,13 @@ export function useOperandMembers(symbols: readonly SymbolInfo[]): MembersAfter 
   const [build, setBuild] = useState<Build | null>(() => loaded);
   const pous = project?.pous;
   const types = project?.types ?? "";
+  const gvls = project?.gvls;
   return useMemo((): MembersAfter => {
-    if (build) return build(symbols, saved, pous ?? [], types);
+    if (build) return build(symbols, saved, pous ?? [], types, gvls ?? []);
     return () => {
       loading ??= import("./operandScope").then((m) => (loaded = m.operandMembers));
       void loading.then((b) => setBuild(() => b));
       return null; // the names only, until it has come
     };
-  }, [build, symbols, saved, pous, types]);
+  }, [build, symbols, saved, pous, types, gvls]);
 }

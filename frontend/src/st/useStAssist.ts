@@ -18,6 +18,7 @@ export function useStAssist(pou: Pou): { diagnostics: Diagnostic[]; completions:
   const types = project?.types ?? "";
   const declarations = pou.declarations ?? "";
   const pous = project?.pous;
+  const gvls = project?.gvls;
   const library = useMemo(() => workingLibrary(saved, pous ?? []), [saved, pous]);
   const diagnostics = useLiveCheck(project);
   // a function block's instance holds the variables of the FBs it EXTENDS too; programs, enumerations, THIS^ and
@@ -28,9 +29,9 @@ export function useStAssist(pou: Pou): { diagnostics: Diagnostic[]; completions:
       (s) => !own.symbols.some((o) => o.name.toUpperCase() === s.name.toUpperCase()),
     );
     const inherited = withInherited({ ...own, symbols: [...chart, ...own.symbols] }, pou, pous ?? []);
-    const project = projectScope(pous ?? [], types);
+    const project = projectScope(pous ?? [], types, gvls ?? []);
     return { ...inherited, ...project, qualifiers: withSelf(project.qualifiers, pou, pous ?? []) };
-  }, [table, declarations, types, library, pou, pous]);
+  }, [table, declarations, types, library, pou, pous, gvls]);
   const completions = useMemo(
     (): StCompletions => ({
       options: stCompletions([...scope.symbols], library, scope),
