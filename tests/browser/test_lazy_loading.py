@@ -31,8 +31,10 @@ PROJECT = {
 
 #: Issue 22 item 8: the entry chunk (app shell, LD editor, panels) at most 450 kB minified; 420.9 kB on 2026-11-28
 #: once the tree's dialogs load on first use (445 kB before); 426.4 kB with the toolbars' measured "More" menu
-#: (ui/OverflowBar.tsx, ui24): the bound keeps a small margin above that.
-ENTRY_CHUNK_LIMIT = 430_000
+#: (ui/OverflowBar.tsx, ui24); 432.8 kB on 2026-11-29 with the named global variable lists in the tree, their
+#: store and the monitor's part paths (the editors themselves load on first use): the bound keeps a small margin
+#: above that, under the issue's 450 kB.
+ENTRY_CHUNK_LIMIT = 436_000
 #: Everything the browser runs before the first POU opens: the entry chunk and the chunks it imports (472 kB on
 #: 2026-11-27 with the declare dialog, breakpoints that follow edits and the task menu; 486 kB after the fifth
 #: session's tree menus for types and tasks, history stepping and opened recordings, pointer rows online; 475.1 kB
