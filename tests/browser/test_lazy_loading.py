@@ -40,8 +40,9 @@ ENTRY_CHUNK_LIMIT = 436_000
 #: session's tree menus for types and tasks, history stepping and opened recordings, pointer rows online; 475.1 kB
 #: on 2026-11-28 with the tree's dialogs (tree/dialogs.tsx: rename, delete, duplicate, kind, FBD <-> CFC with its
 #: conversion) loaded when a menu entry is first chosen; the issue's target is the entry chunk's 450 kB, this bound
-#: catches what moves out of it into chunks loaded at once anyway; 480.7 kB with the "More" menu).
-OPENING_SCRIPTS_LIMIT = 485_000
+#: catches what moves out of it into chunks loaded at once anyway; 480.7 kB with the "More" menu; 488.7 kB on
+#: 2026-11-29 with the named global variable lists and part paths).
+OPENING_SCRIPTS_LIMIT = 492_000
 
 
 def test_st_and_fbd_editors_load_on_first_use(page, server: str) -> None:
