@@ -197,10 +197,10 @@ def convert(expr: Expr, target: IrType) -> Expr:
 
 
 def value_type(ty: IrType) -> IrType:
-    """The type a value computes in: a Subrange's base, STRING whatever its length."""
+    """The type a value computes in: a Subrange's base, STRING whatever its length (a WSTRING's too: one Python str)."""
     if isinstance(ty, Subrange):
         return ty.base
-    if isinstance(ty, Elementary) and ty.length is not None:
+    if isinstance(ty, Elementary) and (ty.length is not None or ty.wide):
         return Elementary(ty.name)
     return ty
 

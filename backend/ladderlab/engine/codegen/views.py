@@ -7,7 +7,7 @@ bytes the variable cannot hold exactly (a BOOL byte of 2, a character after a ST
 padding byte other than 0) is a fault, so no value changes other than the bytes written; so is reading a byte other
 than 0 or 1 as a BOOL (CODESYS's BOOL is 0 or 1, any other byte it shows as INVALID). The layouts come from
 the lowering as specs (ir/byte_layout.py): ``("int", size, signed)``, ``("real", size)``, ``("bool",)``,
-``("string", n)``, ``("range", low, high, base spec)``, ``("enum", name, values, base spec)``, ``("array", count,
+``("string", n)``, ``("wstring", n)``, ``("range", low, high, base spec)``, ``("enum", name, values, base spec)``, ``("array", count,
 element spec)``, ``("struct", name, size, pack_mode, members)``. A subrange's bytes must decode into its range, an
 enumeration's into one of its members' values: a write through a pointer of its base type (``POINTER TO INT`` over an
 ``INT (0..100)`` or a ``Color``) and a read through a pointer to a subrange (an enumeration) over a variable of its
@@ -93,17 +93,29 @@ class Restricted:
 
 
 class String:
-    """STRING[n]: n + 1 bytes, the characters (one byte each), a NUL terminator, then zeros: a STRING holds only
-    its text, so the bytes after its terminator read 0 and a character written there is a fault."""
+    """STRING[n] (``wide`` False): n + 1 bytes, the characters (one Latin-1 byte each, CODESYS's STRING), a NUL
+    terminator, then zeros; WSTRING[n] (``wide``): 2 * (n + 1) bytes, each character a UCS-2 WORD, little-endian
+    (CODESYS's "WSTRING" page), a NUL WORD after them. A string holds only its text, so the bytes after its
+    terminator read 0 and a character written there is a fault."""
 
-    def __init__(self, length: int) -> None:
-        self.length, self.size = length, length + 1
+    def __init__(self, length: int, wide: bool = False) -> None:
+        self.length, self.wide = length, wide
+        self.unit = 2 if wide else 1
+        self.size = (length + 1) * self.unit
+        self.codec = "utf-16-le" if wide else "latin-1"
 
     def encode(self, value: str) -> bytes:
-        return value.encode("latin-1").ljust(self.size, b"\0")
+        return value.encode(self.codec).ljust(self.size, b"\0")
 
     def decode(self, data: bytes) -> str:
-        return data.split(b"\0", 1)[0].decode("latin-1")
+        if not self.wide:
+            return data.split(b"\0", 1)[0].decode("latin-1")
+        end = next((i for i in range(0, len(data) - 1, 2) if not data[i] and not data[i + 1]), len(data) & ~1)
+        text = data[:end]
+        if any(0xD8 <= text[i] <= 0xDF for i in range(1, len(text), 2)):  # a surrogate: no UCS-2 character
+            what = f"the bytes {text.hex()} for a WSTRING, which are no UCS-2 text (a WORD 16#D800..16#DFFF)"
+            raise PlcRuntimeError(INDEX_RANGE, f"reading through a pointer gives {what}")
+        return text.decode("utf-16-le")
 
     def read(self, value: str, offset: int, size: int) -> bytes:
         return self.encode(value)[offset : offset + size]
@@ -111,10 +123,17 @@ class String:
     def write(self, value: str, offset: int, data: bytes) -> str:
         whole = bytearray(self.encode(value))
         whole[offset : offset + len(data)] = data
-        new = self.decode(bytes(whole))
+        try:
+            new = self.decode(bytes(whole))
+        except PlcRuntimeError:
+            raise _not_kept(f"the bytes {bytes(whole).hex()} for a {self._name}, which are no UCS-2 text") from None
         if len(new) > self.length or self.encode(new) != whole:
-            raise _not_kept(f"a STRING[{self.length}] with characters after its terminator (or none)")
+            raise _not_kept(f"a {self._name} with characters after its terminator (or none)")
         return new
+
+    @property
+    def _name(self) -> str:
+        return f"{'WSTRING' if self.wide else 'STRING'}[{self.length}]"
 
 
 class ArrayLayout:
@@ -201,8 +220,8 @@ def layout(spec: tuple) -> Any:
         return Scalar("<f" if spec[1] == 4 else "<d", spec[1], "real")
     if kind == "bool":
         return Scalar("<B", 1, "bool")
-    if kind == "string":
-        return String(spec[1])
+    if kind in ("string", "wstring"):
+        return String(spec[1], kind == "wstring")
     if kind == "struct":
         return StructLayout(spec[1], spec[2], spec[4])
     if kind == "range":
