@@ -93,6 +93,29 @@ def decode_string(text: str) -> str:
     return _ESCAPE_RE[text[0] == '"'].sub(one, text[1:-1])
 
 
+def unheld_character(text: str, wide: bool) -> str | None:
+    """The first character of ``text`` a STRING cannot hold (CODESYS's STRING: one Latin-1 byte a character,
+    U+0000..U+00FF) or a WSTRING cannot (UCS-2: a WORD a character, U+0000..U+D7FF and U+E000..U+FFFF); None when
+    it holds them all."""
+    for ch in text:
+        code = ord(ch)
+        if (code > 0xFF and not wide) or code > 0xFFFF or 0xD800 <= code <= 0xDFFF:
+            return ch
+    return None
+
+
+def unheld_message(ch: str, wide: bool, hint: bool = True) -> str:
+    """Why a STRING (``wide`` False) or a WSTRING cannot hold the character ``ch`` (``unheld_character``); ``hint``:
+    a STRING literal's, that a WSTRING literal holds it."""
+    if wide:
+        return (
+            f"U+{ord(ch):04X} is no character a WSTRING holds: CODESYS's WSTRING is UCS-2, one WORD a character, "
+            "U+0000..U+D7FF and U+E000..U+FFFF"
+        )
+    text = f"'{ch}' (U+{ord(ch):04X}) is no character a STRING holds: CODESYS's STRING is Latin-1, one byte a character"
+    return f"{text}, U+0000..U+00FF" + (' (a WSTRING, "...", holds it)' if hint else "")
+
+
 def encode_string(value: str, wide: bool = False) -> str:
     quote = '"' if wide else "'"
     out = [quote]

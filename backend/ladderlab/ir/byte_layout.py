@@ -4,12 +4,13 @@ from the value (engine/codegen/views.py); the specs here are what it is given.
 
 A spec is ``("int", size, signed)`` for the integers and bit strings, ``("real", size)``, ``("bool",)`` (one byte),
 ``("string", n)`` (STRING[n]: n + 1 bytes, a NUL after the text, one Latin-1 byte a character), ``("wstring", n)``
-(WSTRING[n]: 2 * (n + 1) bytes, a UCS-2 WORD a character, little-endian, a NUL WORD after the text), ``("range",
-low, high, base spec)`` (a subrange: its base's bytes, which must decode to low..high), ``("enum", name, values, base
-spec)`` (an enumeration: its base's bytes, as CODESYS stores it, which must decode to one of its members' values),
-``("array", count, element spec)`` (the elements one after another; a multi-dimensional array is an array of arrays, the first dimension outermost) or
-``("struct", name, size, pack_mode, ((member, offset, spec), ...))`` (a STRUCT: its members in declaration order
-at CODESYS's alignment, padding bytes between and after them; pack_mode as declared, None without one).
+(WSTRING[n]: 2 * (n + 1) bytes, a UCS-2 WORD a character, little-endian, a NUL WORD after the text), ``("range", low,
+high, base spec)`` (a subrange: its base's bytes, which must decode to low..high), ``("enum", name, values, base spec)``
+(an enumeration: its base's bytes, as CODESYS stores it, which must decode to one of its members' values), ``("array",
+count, element spec)`` (the elements one after another; a multi-dimensional array is an array of arrays, the first
+dimension outermost) or ``("struct", name, size, pack_mode, ((member, offset, spec), ...))`` (a STRUCT: its members in
+declaration order at CODESYS's alignment, padding bytes between and after them; pack_mode as declared, None without
+one).
 
 CODESYS aligns each member of a STRUCT to its natural alignment (a number's size) capped by the STRUCT's pack_mode
 (https://content.helpme-codesys.com/en/CODESYS%20Development%20System/_cds_pragma_attribute_pack_mode.html). A

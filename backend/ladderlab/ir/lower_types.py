@@ -353,9 +353,9 @@ class TypeLowering:
 
 
 def _reference_initial(node: ast.Expr) -> ReferenceInit | None:
-    """A reference starts as NULL (None) or as ``REF(x)`` / ``ADR(x)`` of a whole variable or of an element of an
-    array variable with literal indices (``ADR(arrayINT[0])``, seed 000 TYP-46)."""
-    if node.ty is t.NULL:
+    """A reference starts as NULL (None; CODESYS's 0 too) or as ``REF(x)`` / ``ADR(x)`` of a whole variable or of an
+    element of an array variable with literal indices (``ADR(arrayINT[0])``, seed 000 TYP-46)."""
+    if node.ty is t.NULL or isinstance(node, ast.IntLit):  # an integer only as CODESYS's 0 (st/types.null_literal)
         return None
     if isinstance(node, ast.Call) and isinstance(node.callee, ast.Name) and len(node.args) == 1:
         value = node.args[0].value

@@ -1,17 +1,17 @@
 """Memory seen through a pointer of another type (CODESYS ``pt := ADR(x)`` with ``pt : POINTER TO BYTE``).
 
-LadderLab keeps values as Python objects, not bytes; a view reads and writes the bytes a CODESYS PLC on x86/ARM
-would hold, little-endian, computed from the value on each access: ``Layout.read`` encodes only the part of the
-variable the access covers, ``Layout.write`` splices new bytes in and decodes the variable again. A write whose
-bytes the variable cannot hold exactly (a BOOL byte of 2, a character after a STRING's terminator, a STRUCT's
-padding byte other than 0) is a fault, so no value changes other than the bytes written; so is reading a byte other
-than 0 or 1 as a BOOL (CODESYS's BOOL is 0 or 1, any other byte it shows as INVALID). The layouts come from
-the lowering as specs (ir/byte_layout.py): ``("int", size, signed)``, ``("real", size)``, ``("bool",)``,
-``("string", n)``, ``("wstring", n)``, ``("range", low, high, base spec)``, ``("enum", name, values, base spec)``, ``("array", count,
-element spec)``, ``("struct", name, size, pack_mode, members)``. A subrange's bytes must decode into its range, an
-enumeration's into one of its members' values: a write through a pointer of its base type (``POINTER TO INT`` over an
-``INT (0..100)`` or a ``Color``) and a read through a pointer to a subrange (an enumeration) over a variable of its
-base type fault ``subrange_violation`` outside it, naming the pointer (``ADR(v)``).
+LadderLab keeps values as Python objects, not bytes; a view reads and writes the bytes a CODESYS PLC on x86/ARM would
+hold, little-endian, computed from the value on each access: ``Layout.read`` encodes only the part of the variable the
+access covers, ``Layout.write`` splices new bytes in and decodes the variable again. A write whose bytes the variable
+cannot hold exactly (a BOOL byte of 2, a character after a STRING's terminator, a STRUCT's padding byte other than 0) is
+a fault, so no value changes other than the bytes written; so is reading a byte other than 0 or 1 as a BOOL (CODESYS's
+BOOL is 0 or 1, any other byte it shows as INVALID). The layouts come from the lowering as specs (ir/byte_layout.py):
+``("int", size, signed)``, ``("real", size)``, ``("bool",)``, ``("string", n)``, ``("wstring", n)``, ``("range", low,
+high, base spec)``, ``("enum", name, values, base spec)``, ``("array", count, element spec)``, ``("struct", name, size,
+pack_mode, members)``. A subrange's bytes must decode into its range, an enumeration's into one of its members' values:
+a write through a pointer of its base type (``POINTER TO INT`` over an ``INT (0..100)`` or a ``Color``) and a read
+through a pointer to a subrange (an enumeration) over a variable of its base type fault ``subrange_violation`` outside
+it, naming the pointer (``ADR(v)``).
 """
 
 from __future__ import annotations
@@ -20,8 +20,10 @@ import functools
 import struct
 from typing import Any
 
+from ...iec.literals import unheld_character, unheld_message
 from ..errors import (
     INDEX_RANGE,
+    INVALID_ARGUMENT,
     SUBRANGE,
     PlcRuntimeError,
     check_member,
@@ -105,6 +107,9 @@ class String:
         self.codec = "utf-16-le" if wide else "latin-1"
 
     def encode(self, value: str) -> bytes:
+        unheld = unheld_character(value, self.wide)
+        if unheld is not None:  # kept out of strings where they are made (literals, WSTRING_TO_STRING): a guard
+            raise PlcRuntimeError(INVALID_ARGUMENT, f"the bytes of {self._name}: {unheld_message(unheld, self.wide)}")
         return value.encode(self.codec).ljust(self.size, b"\0")
 
     def decode(self, data: bytes) -> str:
