@@ -41,8 +41,9 @@ def byte_layout(ty: IrType) -> Spec | str:
             "above its TYPE), or order its members so that each 8-byte one lies at a multiple of 8 and so does the size"
         )
     if _layout(ty, 4, wstring_align=2) != narrow:
+        inner = _innermost(ty)
         return (
-            f"{article(describe(ty))}, which holds a WSTRING at an odd byte or has an odd size (CODESYS documents no "
+            f"the STRUCT {inner.name if isinstance(inner, Struct) else describe(ty)}, which holds a WSTRING at an odd byte or has an odd size (CODESYS documents no "
             "alignment for a WSTRING member: 1 or 2 bytes): place each WSTRING at an even byte and make each STRUCT's "
             "size even (a BYTE of padding), or give the STRUCT {attribute 'pack_mode' := '1'}"
         )
