@@ -42,8 +42,9 @@ def byte_layout(ty: IrType) -> Spec | str:
         )
     if _layout(ty, 4, wstring_align=2) != narrow:
         inner = _innermost(ty)
+        name = inner.name if isinstance(inner, Struct) else describe(ty)
         return (
-            f"the STRUCT {inner.name if isinstance(inner, Struct) else describe(ty)}, which holds a WSTRING at an odd byte or has an odd size (CODESYS documents no "
+            f"the STRUCT {name}, which holds a WSTRING at an odd byte or has an odd size (CODESYS documents no "
             "alignment for a WSTRING member: 1 or 2 bytes): place each WSTRING at an even byte and make each STRUCT's "
             "size even (a BYTE of padding), or give the STRUCT {attribute 'pack_mode' := '1'}"
         )

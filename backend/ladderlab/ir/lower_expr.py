@@ -583,9 +583,10 @@ def _call(node: ast.Call, ctx: PouContext) -> Expr:
 
 
 def lower_input(value: ast.Expr, ctx: PouContext, ty: IrType) -> Expr:
-    """An input's value; a REFERENCE TO input given a variable (the checker bound it, CODESYS) gets a reference."""
+    """An input's value; a REFERENCE TO input given a variable (the checker bound it, CODESYS) gets a reference; a
+    pointer input given CODESYS's 0 gets NULL (st/types.null_literal)."""
     references = (t.PointerType, t.NullType, t.InterfaceType, t.FbType)  # an interface input: lower_to (interfaces)
-    if isinstance(ty, Reference) and not isinstance(value.ty, references):
+    if isinstance(ty, Reference) and not isinstance(value.ty, references) and not isinstance(value, ast.IntLit):
         return address_of(value, ty, f"REF({print_expression(value)})", ctx)
     return lower_to(value, ctx, ty)
 
