@@ -4,9 +4,10 @@ wrapped or saturated value (issue 25, audit item 4).
 IEC 61131-3 ed. 3 Table 26 converts between the long and short forms (LTIME_TO_TIME, LDT_TO_DT ...) and from DT to
 DATE and TOD; CODESYS ("Conversion: TIME, LTIME", "Conversion: DATE, DT, TOD, LDATE, LDT, LTOD") also converts a
 TIME to a DATE, DT or TOD and the date types to TIME, so each of those stays accepted. TIME is a signed 32-bit count
-of ms (T#-24d20h31m23s648ms..T#24d20h31m23s647ms), DATE and DT start at 1970-01-01 (CODESYS's pages). A DATE is a
-count of whole days since 1970 in LadderLab as in CODESYS, so DATE_TO_TIME(D#1970-01-02) is T#1d and any date from
-1970-01-26 on is more than TIME holds. TIME_TO_TOD and DT_TO_TOD keep their time of day (FUN-11, modulo 24 h).
+of ms (T#-24d20h31m23s648ms..T#24d20h31m23s647ms), DATE and DT start at 1970-01-01 (CODESYS's pages). LadderLab's
+DATE_TO_TIME gives the time since 1970-01-01 (docs/st.md: conversions go through the count, here ms), so
+DATE_TO_TIME(D#1970-01-02) is T#1d and any date from 1970-01-26 on (25 days: 2,160,000,000 ms) is more than TIME
+holds. TIME_TO_TOD keeps the time of day (FUN-11, modulo 24 h).
 """
 
 from __future__ import annotations
