@@ -208,3 +208,46 @@ def test_an_online_write_of_a_character_the_string_cannot_hold_is_refused():
     sim.write("Main.w", "€")
     sim.cycle(1)
     assert sim.read("Main.w") == "€"
+
+
+def test_a_pointer_to_string_over_a_shorter_string_reads_and_writes_up_to_its_terminator():
+    """Audit item 3: a POINTER TO STRING (STRING[80]) over a STRING[4] sees the variable's 5 bytes, not 81: moved by
+    2 it reads the text from there to the terminator, as CODESYS reads a STRING ('abcd' from byte 2 is 'cd'); a
+    write stores the text and its terminator, zeros after them."""
+    sim = simulation(
+        "s : STRING[4] := 'abcd'; p : POINTER TO STRING; whole, tail : STRING; t : STRING[6] := 'abcdef';"
+        "q : POINTER TO STRING;",
+        "p := ADR(s);\nwhole := p^;\np := p + 2;\ntail := p^;\nq := ADR(t);\nq := q + 1;\nq^ := 'xy';",
+    )
+    sim.cycle(1)
+    assert sim.fault is None
+    assert [sim.read(f"Main.{n}") for n in ("whole", "tail", "t", "p", "q")] == [
+        "abcd",
+        "cd",
+        "axy",
+        "ADR(s) + 2",
+        "ADR(t) + 1",
+    ]
+
+
+@pytest.mark.parametrize(
+    ("declarations", "body", "message"),
+    [
+        (
+            "t : STRING[6] := 'ab'; q : POINTER TO STRING;",
+            "q := ADR(t);\nq := q + 2;\nq^ := 'xyzuvw';",  # 6 characters and a NUL from byte 2: bytes 2..8
+            "the pointer ADR(t) + 2 reaches bytes 2..8 of a 7-byte variable: outside it",
+        ),
+        (
+            "buf : ARRAY [0..3] OF BYTE := [65, 66, 67, 68]; p : POINTER TO STRING; y : STRING;",
+            "p := ADR(buf);\ny := p^;",  # no NUL in the buffer: the text runs on past its 4 bytes
+            "the pointer ADR(buf) reaches bytes 0..4 of a 4-byte variable: outside it",
+        ),
+    ],
+)
+def test_a_string_seen_past_the_end_of_its_variable_is_a_fault_naming_the_variables_size(declarations, body, message):
+    sim = simulation(declarations, body)
+    sim.cycle(1)
+    fault = sim.fault
+    assert fault is not None and (fault.code, fault.message) == ("index_out_of_range", message)
+    assert fault.origin.line == 6 + body.count("\n")

@@ -86,17 +86,16 @@ def _layout(ty: IrType, default: int, wstring_align: int = 1) -> Spec | str:
 
 
 def same_target(referred: IrType, target: IrType) -> bool:
-    """A reference to ``target`` reaches a variable of ``referred`` directly: one type (STRING lengths aside). A
-    subrange (an enumeration) and its base differ: a write through a base-typed pointer must not leave the subrange
-    (give a value that is none of the enumeration's), a read through a subrange-typed (enumeration-typed) one must not
-    return one, so those go through a view."""
+    """A reference to ``target`` reaches a variable of ``referred`` directly: one type. A subrange (an enumeration)
+    and its base differ: a write through a base-typed pointer must not leave the subrange (give a value that is none
+    of the enumeration's), a read through a subrange-typed (enumeration-typed) one must not return one, so those go
+    through a view; so does a STRING of another length (a ``POINTER TO STRING`` over a STRING[4]), whose view knows
+    where the variable ends."""
     if referred == target:
         return True
-    return (
-        isinstance(referred, Elementary)
-        and isinstance(target, Elementary)
-        and (referred.name, referred.wide) == (target.name, target.wide)
-    )
+    if not isinstance(referred, Elementary) or not isinstance(target, Elementary) or referred.name != target.name:
+        return False
+    return referred.name != "STRING" or (referred.wide, referred.max_length) == (target.wide, target.max_length)
 
 
 def view_specs(referred: IrType, target: IrType) -> tuple[Spec, Spec] | str:

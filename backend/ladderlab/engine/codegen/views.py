@@ -260,6 +260,32 @@ class ViewRef(Ref):
             raise pointer_outside_bytes(f"the pointer {self.text}", self.offset, size, self.whole.size)
         return self.c if self.k is None else self.c[self.k]  # type: ignore[index]  # see __init__
 
+    def _span(self) -> int:
+        """The bytes an access covers: what it sees, but a STRING seen only up to the variable's end when that comes
+        first (CODESYS reads a STRING up to its terminator: ``POINTER TO STRING`` over a STRING[4], moved by 2)."""
+        if isinstance(self.seen, String):
+            return max(0, min(self.seen.size, self.whole.size - self.offset))
+        return self.seen.size
+
+    def _read(self, value: object, span: int) -> bytes:
+        """The ``span`` bytes seen from ``offset``; a STRING's text must end inside them (else it reads on past the
+        variable: a fault naming the bytes it would reach)."""
+        data = self.whole.read(value, self.offset, span)
+        if span < self.seen.size and not _terminated(data, self.seen):
+            raise pointer_outside_bytes(f"the pointer {self.text}", self.offset, span + self.seen.unit, self.whole.size)
+        return data
+
+    def _encoded(self, new: object, span: int) -> bytes:
+        """The bytes of ``new`` written from ``offset``: a STRING's text and terminator, and zeros up to ``span``
+        (after a terminator the variable holds nothing); a text reaching past the variable is a fault."""
+        data = self.seen.encode(new)
+        if span < self.seen.size:
+            if not _terminated(data[:span], self.seen):
+                needed = (len(new) + 1) * self.seen.unit  # type: ignore[arg-type]  # a str: the seen is a String
+                raise pointer_outside_bytes(f"the pointer {self.text}", self.offset, needed, self.whole.size)
+            data = data[:span]
+        return data
+
     @property
     def v(self) -> object:
         if isinstance(self.seen, ArrayLayout):  # each element is checked when it is read or written
@@ -268,17 +294,19 @@ class ViewRef(Ref):
         if isinstance(self.seen, StructLayout):  # each member is, as it is read or written
             self._target(self.seen.size)
             return StructView(self, self.seen)
-        value = self._target(self.seen.size)
+        span = self._span()
+        value = self._target(span)
         try:
-            return self.seen.decode(self.whole.read(value, self.offset, self.seen.size))
+            return self.seen.decode(self._read(value, span))
         except PlcRuntimeError as error:
             raise self._through(error, "read") from None
 
     @v.setter
     def v(self, new: object) -> None:
-        value = self._target(self.seen.size)
+        span = self._span()
+        value = self._target(span)
         try:
-            written = self.whole.write(value, self.offset, self.seen.encode(new))
+            written = self.whole.write(value, self.offset, self._encoded(new, span))
         except PlcRuntimeError as error:
             raise self._through(error, "written") from None
         if self.k is not None and written is not value:
@@ -287,9 +315,10 @@ class ViewRef(Ref):
     def trial(self, key: object, new: object) -> None:
         """Fault as writing ``new`` would, on a copy: nothing is written (a user's write through the pointer, its
         pair ``(self, key)``, is refused when it is given: engine/paths.py)."""
-        value = deep_copy(self._target(self.seen.size))
+        span = self._span()
+        value = deep_copy(self._target(span))
         try:
-            self.whole.write(value, self.offset, self.seen.encode(new))
+            self.whole.write(value, self.offset, self._encoded(new, span))
         except PlcRuntimeError as error:
             raise self._through(error, "written") from None
 
@@ -303,7 +332,7 @@ class ViewRef(Ref):
     def pair(self) -> tuple[object, object]:
         """``(self, "v")``: a VAR_IN_OUT or an online path reaches the bytes through ``v``; checked here, so an
         online path through a pointer outside its variable (or dangling) names no variable (engine/paths.py)."""
-        self._target(0 if isinstance(self.seen, ArrayLayout) else self.seen.size)
+        self._target(0 if isinstance(self.seen, ArrayLayout) else self._span())
         return (self, "v")
 
     def at(self, offset: int, seen: Any) -> ViewRef:
@@ -338,6 +367,13 @@ class ViewRef(Ref):
 
     def __hash__(self) -> int:
         return hash((id(self.c), self.k, self.offset))
+
+
+def _terminated(data: bytes, seen: Any) -> bool:
+    """``data`` holds a STRING's terminator (a NUL byte; a WSTRING's a NUL WORD at an even byte)."""
+    if not seen.wide:
+        return b"\0" in data
+    return any(not data[i] and not data[i + 1] for i in range(0, len(data) - 1, 2))
 
 
 class ArrayView(Seen):
