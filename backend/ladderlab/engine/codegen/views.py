@@ -107,10 +107,14 @@ class String:
         self.codec = "utf-16-le" if wide else "latin-1"
 
     def encode(self, value: str) -> bytes:
-        unheld = unheld_character(value, self.wide)
-        if unheld is not None:  # kept out of strings where they are made (literals, WSTRING_TO_STRING): a guard
+        try:
+            data = value.encode(self.codec)
+        except UnicodeEncodeError:
+            data = b""
+        if len(data) != len(value) * self.unit:  # kept out where strings are made (literals, WSTRING_TO_STRING)
+            unheld = unheld_character(value, self.wide) or value[0]
             raise PlcRuntimeError(INVALID_ARGUMENT, f"the bytes of {self._name}: {unheld_message(unheld, self.wide)}")
-        return value.encode(self.codec).ljust(self.size, b"\0")
+        return data.ljust(self.size, b"\0")
 
     def decode(self, data: bytes) -> str:
         if not self.wide:
