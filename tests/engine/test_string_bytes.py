@@ -21,6 +21,7 @@ from ladderlab.simulation.build import build_project
 from ladderlab.st.project_text import source_to_project
 
 from .test_references import TYPES, simulation
+from .test_struct_memory_views import MEMCPY
 
 #: UCS-2 characters: every code point but the surrogates (CODESYS's WSTRING page), NUL aside (the terminator).
 UCS2 = st.characters(min_codepoint=1, max_codepoint=0xFFFF, blacklist_categories=("Cs",))
@@ -251,3 +252,21 @@ def test_a_string_seen_past_the_end_of_its_variable_is_a_fault_naming_the_variab
     fault = sim.fault
     assert fault is not None and (fault.code, fault.message) == ("index_out_of_range", message)
     assert fault.origin.line == 6 + body.count("\n")
+
+
+def test_an_oscat_style_memcpy_copies_a_wstring_word_by_word():
+    """``MEMCPY(ADR(dst), ADR(src), SIZEOF(src))`` (OSCAT's byte copy) over a WSTRING[3] copies its 8 bytes: 'A'
+    16#0041, '€' 16#20AC, then the terminator; into another WSTRING[3] they are the same text."""
+    text = (
+        f"{MEMCPY}PROGRAM Main\nVAR\n"
+        'w : WSTRING[3] := "A€"; w2 : WSTRING[3]; raw : ARRAY [0..7] OF BYTE; ok1, ok2 : BOOL;\nEND_VAR\n'
+        "ok1 := MEMCPY(ADR(w2), ADR(w), SIZEOF(w));\nok2 := MEMCPY(ADR(raw), ADR(w), SIZEOF(w));\nEND_PROGRAM\n"
+    )
+    project, _ = source_to_project(text, "bytes")
+    result = build_project(project)
+    assert [d.format() for d in result.diagnostics if d.severity == "error"] == []
+    sim = result.simulation()
+    sim.cycle(1)
+    assert sim.fault is None
+    assert sim.read("Main.w2") == "A€"
+    assert sim.read("Main.raw") == [0x41, 0x00, 0xAC, 0x20, 0x00, 0x00, 0x00, 0x00]
