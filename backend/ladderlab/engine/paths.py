@@ -20,7 +20,7 @@ from dataclasses import dataclass
 
 from ..iec import values
 from ..iec.addresses import Address, parse_address, same_location
-from ..iec.literals import unheld_character, unheld_message
+from ..iec.literals import textless_character, textless_message
 from ..iec.spelling import did_you_mean
 from ..ir import nodes as ir
 from ..ir import types as t
@@ -403,11 +403,9 @@ def coerce_for(location: Location, value: object) -> object:
         coerced = values.coerce(value, runtime_name(ty))  # type: ignore[arg-type]
         if isinstance(ty, t.Subrange) and not ty.low <= coerced <= ty.high:  # type: ignore[operator]
             raise ValueError(f"{coerced} is outside the subrange {ty.low}..{ty.high}")
-        unheld = (
-            unheld_character(coerced, ty.wide) if isinstance(coerced, str) and isinstance(ty, t.Elementary) else None
-        )
-        if unheld is not None:  # a STRING holds Latin-1, a WSTRING UCS-2 (iec/literals.py)
-            raise ValueError(unheld_message(unheld, ty.wide, hint=False))  # type: ignore[union-attr]  # an Elementary
+        textless = textless_character(coerced) if isinstance(coerced, str) else None
+        if textless is not None:  # as in a literal (iec/literals.py)
+            raise ValueError(textless_message(textless))
         return coerced
     except ValueError as error:
         raise ValueError(f"{location.path}: {error}") from None

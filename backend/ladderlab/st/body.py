@@ -13,7 +13,7 @@ from typing import Any
 from ..iec import stdlib
 from ..iec.addresses import parse_address, part_type, partial_access, same_location
 from ..iec.elementary import LONG_TIME_TYPES, SHORT_TO_LONG
-from ..iec.literals import unheld_character, unheld_message
+from ..iec.literals import textless_character, textless_message
 from ..iec.spelling import did_you_mean
 from . import ast
 from . import types as t
@@ -156,11 +156,11 @@ class BodyChecker:
         return ERROR
 
     def _string_literal(self, node: ast.StringLit) -> Type:
-        """A STRING or WSTRING literal, whose characters its type must hold (ST-RANGE otherwise: no byte is made up
-        for them)."""
-        unheld = unheld_character(node.value, node.wide)
-        if unheld is not None:
-            self.report("ST-RANGE", unheld_message(unheld, node.wide), node)
+        """A STRING or WSTRING literal, whose characters a string must hold (ST-RANGE otherwise: no byte or WORD is
+        made up for them)."""
+        textless = textless_character(node.value)
+        if textless is not None:
+            self.report("ST-RANGE", textless_message(textless), node)
         return t.StringType(node.wide)
 
     def _typed_literal(self, node: ast.TypedLit) -> Type:

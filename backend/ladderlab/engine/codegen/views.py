@@ -111,7 +111,7 @@ class String:
             data = value.encode(self.codec)
         except UnicodeEncodeError:
             data = b""
-        if len(data) != len(value) * self.unit:  # kept out where strings are made (literals, WSTRING_TO_STRING)
+        if len(data) != len(value) * self.unit:  # a STRING's 'П' (a CoDeSys 2.3 file's cp1251): its byte is unknown
             unheld = unheld_character(value, self.wide) or value[0]
             raise PlcRuntimeError(INVALID_ARGUMENT, f"the bytes of {self._name}: {unheld_message(unheld, self.wide)}")
         return data.ljust(self.size, b"\0")

@@ -138,13 +138,13 @@ def conversion_names() -> dict[str, tuple[str, str, bool]]:
 
 
 def _to_latin1(dst: str) -> Impl:
-    """WSTRING_TO_STRING: the same characters, each one a STRING holds (Latin-1); CODESYS documents no byte for
-    any other, so one is a fault (``invalid_argument``) rather than a made-up character."""
+    """WSTRING_TO_STRING: the same characters, each one a STRING holds (CODESYS's STRING is Latin-1); CODESYS
+    documents no byte for any other, so one is a fault (``invalid_argument``) rather than a made-up character."""
 
     def latin1(text: str) -> str:
         unheld = unheld_character(text, wide=False)
         if unheld is not None:
-            raise PlcRuntimeError(INVALID_ARGUMENT, f"WSTRING_TO_STRING: {unheld_message(unheld, False, hint=False)}")
+            raise PlcRuntimeError(INVALID_ARGUMENT, f"WSTRING_TO_STRING: {unheld_message(unheld, False)}")
         return text
 
     return Impl("ll__latin1(a0)", dst, names={"ll__latin1": latin1})
