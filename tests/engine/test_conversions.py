@@ -8,7 +8,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from ladderlab.engine.errors import INVALID_ARGUMENT, NOT_A_NUMBER, OVERFLOW, TRUNCATED
+from ladderlab.engine.errors import INVALID_ARGUMENT, NOT_A_NUMBER, OVERFLOW, TRUNCATED, PlcRuntimeError
 from ladderlab.engine.stdlib import STANDARD_FUNCTIONS, convert, converter, make_function
 from ladderlab.iec.elementary import ALIASES, ELEMENTARY
 from ladderlab.iec.values import default_value, resolve
@@ -60,7 +60,6 @@ MOMENT = date_ms("2003-06-21 11:38:52.350")
         ("DATE_AND_TIME_TO_TIME_OF_DAY", MOMENT, ms(h=11, m=38, s=52, millis=350)),  # FUN-10 long names
         ("DATE_AND_TIME_TO_DATE", MOMENT, date_ms("2003-06-21")),
         ("DATE_TO_DT", date_ms("2003-06-21"), date_ms("2003-06-21")),
-        ("TIME_TO_DATE", -1, 0),  # DATE saturates at the epoch
         ("UDINT_TO_DT", 5 * DAY + 7, 5 * DAY + 7),
         ("DT_TO_UDINT", MOMENT, MOMENT % 2**32),
         ("INT_TO_STRING", -25, "-25"),  # FUN-11: no padding
@@ -106,8 +105,6 @@ def test_conversion_vectors_FUN_11(name, arg, expected):
         ("STRING_TO_INT", "40000", -25536, OVERFLOW),
         ("STRING_TO_TIME", "soon", 0, NOT_A_NUMBER),
         ("STRING_TO_BOOL", "maybe", False, NOT_A_NUMBER),
-        ("TIME_TO_DATE", -1, 0, OVERFLOW),
-        ("DT_TO_TIME", MOMENT, reference_wrap(MOMENT, "TIME"), OVERFLOW),
     ],
 )
 def test_lossy_conversions_warn_in_the_checked_form(name, arg, expected, code):
@@ -115,6 +112,32 @@ def test_lossy_conversions_warn_in_the_checked_form(name, arg, expected, code):
     assert make_function(name, [src])(arg) == expected
     value, warning = make_function(name, [src], checked=True)(arg)
     assert value == expected and warning.code == code
+
+
+@pytest.mark.parametrize(
+    "name, arg, message",
+    [
+        ("TIME_TO_DATE", -1, "TIME_TO_DATE gives -86400000 ms, outside DATE (D#1970-01-01..D#9999-12-31)"),
+        (
+            "DT_TO_TIME",
+            MOMENT,
+            f"DATE_AND_TIME_TO_TIME gives {MOMENT} ms, outside TIME (T#-24d20h31m23s648ms..T#24d20h31m23s647ms)",
+        ),
+        (
+            "LTIME_TO_TIME",
+            30 * DAY * 1_000_000,
+            f"LTIME_TO_TIME gives {30 * DAY} ms, outside TIME (T#-24d20h31m23s648ms..T#24d20h31m23s647ms)",
+        ),
+    ],
+)
+def test_a_duration_or_date_outside_its_type_faults_and_is_eno_false_in_the_checked_form(name, arg, message):
+    """No wrapped or saturated TIME, DATE or DT stands in for a conversion's result (issue 25): the plain call faults
+    ``overflow``; with ENO wired the checked form gives ENO FALSE (IEC 61131-3 ed. 3 6.6.2.2) with the old value."""
+    src = name.split("_TO_")[0]
+    with pytest.raises(PlcRuntimeError) as fault:
+        make_function(name, [src])(arg)
+    assert (fault.value.code, fault.value.message) == (OVERFLOW, message)
+    assert make_function(name, [src], checked=True)(arg)[1].code == OVERFLOW
 
 
 @pytest.mark.parametrize("name, arg", [("TRUNC", math.nan), ("TRUNC", -math.inf)])

@@ -31,7 +31,7 @@ def initial(declaration: str, extra: str = "") -> object:
 def test_ir_type_of_elementary_and_string_types():
     assert ir_type(t.Elementary("TIME_OF_DAY")) == Elementary("TIME_OF_DAY")
     assert ir_type(t.StringType(False, 20)) == Elementary("STRING", 20)
-    assert ir_type(t.StringType(True)) == Elementary("STRING")  # WSTRING: a Python str too
+    assert ir_type(t.StringType(True)) == Elementary("STRING", wide=True)  # WSTRING: a Python str too, 2 bytes a char
     assert ir_type(t.UntypedInt(70000)) == DINT and ir_type(t.UntypedReal()) == Elementary("LREAL")
 
 

@@ -22,6 +22,7 @@ from typing import Any
 
 from ..iec import values
 from ..iec.addresses import PART_NAMES, PARTS, Address, parse_address, part_type, partial_access, same_location
+from ..iec.literals import textless_character, textless_message
 from ..iec.spelling import did_you_mean
 from ..ir import nodes as ir
 from ..ir import types as t
@@ -488,6 +489,9 @@ def coerce_for(location: Location, value: object) -> object:
         coerced = values.coerce(value, runtime_name(ty))  # type: ignore[arg-type]
         if isinstance(ty, t.Subrange) and not ty.low <= coerced <= ty.high:  # type: ignore[operator]
             raise ValueError(f"{coerced} is outside the subrange {ty.low}..{ty.high}")
+        textless = textless_character(coerced) if isinstance(coerced, str) else None
+        if textless is not None:  # as in a literal (iec/literals.py)
+            raise ValueError(textless_message(textless))
         return coerced
     except ValueError as error:
         raise ValueError(f"{location.path}: {error}") from None

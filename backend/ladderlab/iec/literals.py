@@ -93,6 +93,44 @@ def decode_string(text: str) -> str:
     return _ESCAPE_RE[text[0] == '"'].sub(one, text[1:-1])
 
 
+def unheld_character(text: str, wide: bool) -> str | None:
+    """The first character of ``text`` a STRING's byte cannot be (CODESYS's STRING: Latin-1, U+0000..U+00FF) or a
+    WSTRING's WORD cannot (UCS-2: U+0000..U+D7FF and U+E000..U+FFFF); None when each has its byte or WORD."""
+    for ch in text:
+        code = ord(ch)
+        if (code > 0xFF and not wide) or code > 0xFFFF or 0xD800 <= code <= 0xDFFF:
+            return ch
+    return None
+
+
+def unheld_message(ch: str, wide: bool) -> str:
+    """Why the character ``ch`` has no byte in a STRING (``wide`` False) or no WORD in a WSTRING
+    (``unheld_character``)."""
+    if wide:
+        return (
+            f"U+{ord(ch):04X} is no character a WSTRING holds: CODESYS's WSTRING is UCS-2, one WORD a character, "
+            "U+0000..U+D7FF and U+E000..U+FFFF"
+        )
+    return (
+        f"'{ch}' (U+{ord(ch):04X}) has no byte in CODESYS's STRING, which is Latin-1, one byte a character, "
+        "U+0000..U+00FF (the code page of a CoDeSys 2.3 file, cp1251 say, is not modelled)"
+    )
+
+
+def textless_character(text: str) -> str | None:
+    """The first character of ``text`` that neither a STRING nor a WSTRING holds (above U+FFFF, or a surrogate):
+    any other may be a STRING's, its byte that of the file's code page (a CoDeSys 2.3 course's cp1251 'Пуск')."""
+    return unheld_character(text, wide=True)
+
+
+def textless_message(ch: str) -> str:
+    """Why no STRING or WSTRING holds ``ch`` (``textless_character``)."""
+    return (
+        f"U+{ord(ch):04X} is no character a STRING or WSTRING holds: CODESYS's WSTRING is UCS-2 (U+0000..U+D7FF and "
+        "U+E000..U+FFFF), a STRING one byte a character"
+    )
+
+
 def encode_string(value: str, wide: bool = False) -> str:
     quote = '"' if wide else "'"
     out = [quote]

@@ -155,8 +155,8 @@ def _reference_to(expr: Expr, target: Reference, node: ast.Expr | None) -> Expr:
     """A reference stored as a reference to ``target.target``: NULL, one to a variable of that very type, or a
     ``View`` of the variable's bytes as that type (a ``POINTER TO BYTE`` over a STRING: ir/byte_layout.py) when
     both types have a byte layout."""
-    if isinstance(expr, Const) and expr.value is None:
-        return Const(None, target)
+    if isinstance(expr, Const) and (expr.value is None or (expr.value == 0 and isinstance(expr.type, Elementary))):
+        return Const(None, target)  # NULL, or CODESYS's 0 (the checker let it through: st/types.null_literal)
     if not isinstance(expr.type, Reference):
         raise LoweringError(f"a {_reference_text(target)} cannot refer to {_referred_text(expr.type)}", node)
     instances = isinstance(expr.type.target, FbInstance) and isinstance(target.target, FbInstance)
@@ -199,10 +199,10 @@ def convert(expr: Expr, target: IrType) -> Expr:
 
 
 def value_type(ty: IrType) -> IrType:
-    """The type a value computes in: a Subrange's base, STRING whatever its length."""
+    """The type a value computes in: a Subrange's base, STRING whatever its length (a WSTRING's too: one Python str)."""
     if isinstance(ty, Subrange):
         return ty.base
-    if isinstance(ty, Elementary) and ty.length is not None:
+    if isinstance(ty, Elementary) and (ty.length is not None or ty.wide):
         return Elementary(ty.name)
     return ty
 
@@ -587,9 +587,10 @@ def _call(node: ast.Call, ctx: PouContext) -> Expr:
 
 
 def lower_input(value: ast.Expr, ctx: PouContext, ty: IrType) -> Expr:
-    """An input's value; a REFERENCE TO input given a variable (the checker bound it, CODESYS) gets a reference."""
+    """An input's value; a REFERENCE TO input given a variable (the checker bound it, CODESYS) gets a reference; a
+    pointer input given CODESYS's 0 gets NULL (st/types.null_literal)."""
     references = (t.PointerType, t.NullType, t.InterfaceType, t.FbType)  # an interface input: lower_to (interfaces)
-    if isinstance(ty, Reference) and not isinstance(value.ty, references):
+    if isinstance(ty, Reference) and not isinstance(value.ty, references) and not isinstance(value, ast.IntLit):
         return address_of(value, ty, f"REF({print_expression(value)})", ctx)
     return lower_to(value, ctx, ty)
 
@@ -711,7 +712,17 @@ def std_call(node: ast.Call, ctx: PouContext) -> Call:
         lower_to(bound[index].value, ctx, target) if index in bound else Const(ir_default(target), target)
         for index, target in enumerate(types)
     )
-    return in_seconds(Call(function.name, args, types, result))  # (a call statement's node has no .ty)
+    return in_seconds(_narrowed_text(Call(function.name, args, types, result)))  # (a call statement's node has no .ty)
+
+
+def _narrowed_text(call: Call) -> Call:
+    """An overloaded ``TO_STRING`` of a WSTRING as ``WSTRING_TO_STRING``, which checks its characters are ones a
+    STRING holds (engine/stdlib/conversions.py): the value model keeps both strings alike, the call's name tells."""
+    source = call.arg_types[0] if len(call.arg_types) == 1 else None
+    wide = isinstance(source, Elementary) and source.wide
+    if wide and call.function.upper() == "TO_STRING":
+        return Call("WSTRING_TO_STRING", call.args, call.arg_types, call.type)
+    return call
 
 
 def _signature(

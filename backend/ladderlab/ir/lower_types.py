@@ -103,7 +103,7 @@ class TypeLowering:
             if ty.length is not None and ty.length > limits.STRING_LENGTH.value:
                 found = f"{'WSTRING' if ty.wide else 'STRING'}[{ty.length}] holds {ty.length:,} characters"
                 raise LoweringError(limits.STRING_LENGTH.message(found), code="LIMIT-SIZE")
-            return Elementary("STRING", ty.length)  # WSTRING too: both are Python str in the value model
+            return Elementary("STRING", ty.length, ty.wide)  # both are a Python str in the value model
         if isinstance(ty, (t.UntypedInt, t.UntypedReal)):
             return self.type_of(t.concrete(ty))
         if isinstance(ty, t.ArrayType):
@@ -357,9 +357,9 @@ class TypeLowering:
 
 
 def _reference_initial(node: ast.Expr) -> ReferenceInit | None:
-    """A reference starts as NULL (None) or as ``REF(x)`` / ``ADR(x)`` of a whole variable or of an element of an
-    array variable with literal indices (``ADR(arrayINT[0])``, seed 000 TYP-46)."""
-    if node.ty is t.NULL:
+    """A reference starts as NULL (None; CODESYS's 0 too) or as ``REF(x)`` / ``ADR(x)`` of a whole variable or of an
+    element of an array variable with literal indices (``ADR(arrayINT[0])``, seed 000 TYP-46)."""
+    if node.ty is t.NULL or isinstance(node, ast.IntLit):  # an integer only as CODESYS's 0 (st/types.null_literal)
         return None
     if isinstance(node, ast.Call) and isinstance(node.callee, ast.Name) and len(node.args) == 1:
         value = node.args[0].value
@@ -440,7 +440,8 @@ def ir_default(type: IrType) -> object:
 
 
 def byte_size(type: IrType) -> int:
-    """SIZEOF (TYP-45) as CODESYS counts: the type's width, BOOL 1, STRING[n] n + 1, an enumeration its base
+    """SIZEOF (TYP-45) as CODESYS counts: the type's width, BOOL 1, STRING[n] n + 1, WSTRING[n] 2 * (n + 1) (a WORD
+    a character and the terminator: CODESYS's "WSTRING" page), an enumeration its base
     type's (INT unless it names another: CODESYS's "Enumeration" page), a pointer 4 (an address of the 32-bit
     x86/ARM target LadderLab computes as, docs/st.md), arrays the sum of their elements, a STRUCT its byte
     layout's size (padding included: ir/byte_layout.py)."""
@@ -448,7 +449,7 @@ def byte_size(type: IrType) -> int:
         return byte_size(type.base)
     if isinstance(type, Elementary):
         if type.info.category == "string":
-            return type.max_length + 1
+            return (type.max_length + 1) * (2 if type.wide else 1)
         return max(1, type.info.bits // 8)
     if isinstance(type, Enum):
         return ELEMENTARY[type.base].bits // 8

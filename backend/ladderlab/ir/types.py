@@ -15,10 +15,12 @@ from ..iec.elementary import DEFAULT_STRING_LENGTH, ELEMENTARY, ElementaryType
 
 @dataclass(frozen=True)
 class Elementary:
-    """An elementary type by canonical name (``INT``, ``TIME_OF_DAY``...); ``length`` for STRING[n]."""
+    """An elementary type by canonical name (``INT``, ``TIME_OF_DAY``...); ``length`` for STRING[n]; ``wide`` for a
+    WSTRING, which the value model holds as a STRING (a Python str) but CODESYS lays out in 2 bytes a character."""
 
     name: str
     length: int | None = None
+    wide: bool = False
 
     @property
     def info(self) -> ElementaryType:
@@ -133,7 +135,10 @@ IrType = Elementary | Subrange | Enum | Array | Struct | FbInstance | Reference
 def describe(ty: IrType) -> str:
     """IEC-like text of a type for messages and comments."""
     if isinstance(ty, Elementary):
-        return f"STRING[{ty.length}]" if ty.name == "STRING" and ty.length is not None else ty.name
+        if ty.name == "STRING":
+            name = "WSTRING" if ty.wide else "STRING"
+            return f"{name}[{ty.length}]" if ty.length is not None else name
+        return ty.name
     if isinstance(ty, Subrange):
         return f"{ty.base.name} ({ty.low}..{ty.high})"
     if isinstance(ty, Enum | Struct):

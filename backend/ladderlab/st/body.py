@@ -13,6 +13,7 @@ from typing import Any
 from ..iec import stdlib
 from ..iec.addresses import PART_NAMES, parse_address, part_type, partial_access, same_location
 from ..iec.elementary import LONG_TIME_TYPES, SHORT_TO_LONG
+from ..iec.literals import textless_character, textless_message
 from ..iec.spelling import did_you_mean
 from . import ast
 from . import types as t
@@ -152,6 +153,14 @@ class BodyChecker:
         if base is not ERROR:
             self.report("ST-TYPE-MISMATCH", f"'^' needs a pointer, not {base}", node)
         return ERROR
+
+    def _string_literal(self, node: ast.StringLit) -> Type:
+        """A STRING or WSTRING literal, whose characters a string must hold (ST-RANGE otherwise: no byte or WORD is
+        made up for them)."""
+        textless = textless_character(node.value)
+        if textless is not None:
+            self.report("ST-RANGE", textless_message(textless), node)
+        return t.StringType(node.wide)
 
     def _typed_literal(self, node: ast.TypedLit) -> Type:
         target = t.elementary(node.type_name)
@@ -672,7 +681,7 @@ _EXPRESSION_CHECKS: dict[type, Callable[[BodyChecker, Any, Type | None], Type]] 
     ast.IntLit: lambda checker, node, expected: t.UntypedInt(node.value),
     ast.RealLit: lambda checker, node, expected: t.UntypedReal(node.value),
     ast.BoolLit: lambda checker, node, expected: t.BOOL,
-    ast.StringLit: lambda checker, node, expected: t.StringType(node.wide),
+    ast.StringLit: lambda checker, node, expected: checker._string_literal(node),
     ast.TimeLit: lambda checker, node, expected: t.Elementary(node.kind),
     ast.TypedLit: lambda checker, node, expected: checker._typed_literal(node),
     ast.Name: lambda checker, node, expected: checker._name(node, expected),

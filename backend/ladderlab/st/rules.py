@@ -47,13 +47,15 @@ def assignable_or_report(checker: Any, target: Type, value: Type, node, what: st
             "ST-RANGE", f"{value.value} is out of range for {target} ({target.info.min}..{target.info.max})", node
         )
         return False
-    hint = t.conversion_hint(target, value)
+    hint, shown = t.conversion_hint(target, value), str(value)
+    if isinstance(target, t.PointerType) and isinstance(value, t.UntypedInt) and value.value == 0:
+        hint, shown = ": under IEC typing a reference to no variable is NULL (CODESYS typing also takes 0)", "0"
     if what == "assign":
-        message = f"cannot assign {value} to {target}{hint}"
+        message = f"cannot assign {shown} to {target}{hint}"
     elif what == "init":
-        message = f"cannot initialise {target} with {value}{hint}"
+        message = f"cannot initialise {target} with {shown}{hint}"
     else:
-        message = f"{what}: expected {target}, got {value}{hint}"
+        message = f"{what}: expected {target}, got {shown}{hint}"
     checker.report("ST-TYPE-MISMATCH", message, node)
     return False
 

@@ -363,6 +363,8 @@ def assignable(target: Type, source: Type) -> str | None:
     if isinstance(target, InterfaceType):  # an instance (or interface) that implements it, or NULL
         return None if isinstance(source, NullType) or implements(source, target) else "error"
     if isinstance(source, UNTYPED):
+        if null_literal(target, source):
+            return None
         return None if takes_literal(target, source) and literal_fits(target, source.value) else "error"
     if isinstance(target, Elementary) and isinstance(source, Elementary) and _widens(source, target):
         return "widen"
@@ -371,6 +373,13 @@ def assignable(target: Type, source: Type) -> str | None:
             return None if derived(target.target, source.target) else "error"
         return "widen"
     return "narrow" if narrows(target, source) else "error"
+
+
+def null_literal(target: Type, source: Type) -> bool:
+    """``p := 0`` under CODESYS typing: the literal 0 stored in a POINTER TO / REF_TO is NULL (CODESYS's null
+    address, as ``p <> 0`` tests it); IEC 61131-3 ed. 3 stores only NULL in a reference (6.4.4.10.2)."""
+    zero = isinstance(source, UntypedInt) and source.value == 0
+    return zero and isinstance(target, PointerType) and not target.implicit and codesys_typing()
 
 
 def common(a: Type, b: Type) -> tuple[Type, str | None]:

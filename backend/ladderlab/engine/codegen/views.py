@@ -1,17 +1,17 @@
 """Memory seen through a pointer of another type (CODESYS ``pt := ADR(x)`` with ``pt : POINTER TO BYTE``).
 
-LadderLab keeps values as Python objects, not bytes; a view reads and writes the bytes a CODESYS PLC on x86/ARM
-would hold, little-endian, computed from the value on each access: ``Layout.read`` encodes only the part of the
-variable the access covers, ``Layout.write`` splices new bytes in and decodes the variable again. A write whose
-bytes the variable cannot hold exactly (a BOOL byte of 2, a character after a STRING's terminator, a STRUCT's
-padding byte other than 0) is a fault, so no value changes other than the bytes written; so is reading a byte other
-than 0 or 1 as a BOOL (CODESYS's BOOL is 0 or 1, any other byte it shows as INVALID). The layouts come from
-the lowering as specs (ir/byte_layout.py): ``("int", size, signed)``, ``("real", size)``, ``("bool",)``,
-``("string", n)``, ``("range", low, high, base spec)``, ``("enum", name, values, base spec)``, ``("array", count,
-element spec)``, ``("struct", name, size, pack_mode, members)``. A subrange's bytes must decode into its range, an
-enumeration's into one of its members' values: a write through a pointer of its base type (``POINTER TO INT`` over an
-``INT (0..100)`` or a ``Color``) and a read through a pointer to a subrange (an enumeration) over a variable of its
-base type fault ``subrange_violation`` outside it, naming the pointer (``ADR(v)``).
+LadderLab keeps values as Python objects, not bytes; a view reads and writes the bytes a CODESYS PLC on x86/ARM would
+hold, little-endian, computed from the value on each access: ``Layout.read`` encodes only the part of the variable the
+access covers, ``Layout.write`` splices new bytes in and decodes the variable again. A write whose bytes the variable
+cannot hold exactly (a BOOL byte of 2, a character after a STRING's terminator, a STRUCT's padding byte other than 0) is
+a fault, so no value changes other than the bytes written; so is reading a byte other than 0 or 1 as a BOOL (CODESYS's
+BOOL is 0 or 1, any other byte it shows as INVALID). The layouts come from the lowering as specs (ir/byte_layout.py):
+``("int", size, signed)``, ``("real", size)``, ``("bool",)``, ``("string", n)``, ``("wstring", n)``, ``("range", low,
+high, base spec)``, ``("enum", name, values, base spec)``, ``("array", count, element spec)``, ``("struct", name, size,
+pack_mode, members)``. A subrange's bytes must decode into its range, an enumeration's into one of its members' values:
+a write through a pointer of its base type (``POINTER TO INT`` over an ``INT (0..100)`` or a ``Color``) and a read
+through a pointer to a subrange (an enumeration) over a variable of its base type fault ``subrange_violation`` outside
+it, naming the pointer (``ADR(v)``).
 """
 
 from __future__ import annotations
@@ -20,8 +20,10 @@ import functools
 import struct
 from typing import Any
 
+from ...iec.literals import unheld_character, unheld_message
 from ..errors import (
     INDEX_RANGE,
+    INVALID_ARGUMENT,
     SUBRANGE,
     PlcRuntimeError,
     check_member,
@@ -93,17 +95,36 @@ class Restricted:
 
 
 class String:
-    """STRING[n]: n + 1 bytes, the characters (one byte each), a NUL terminator, then zeros: a STRING holds only
-    its text, so the bytes after its terminator read 0 and a character written there is a fault."""
+    """STRING[n] (``wide`` False): n + 1 bytes, the characters (one Latin-1 byte each, CODESYS's STRING), a NUL
+    terminator, then zeros; WSTRING[n] (``wide``): 2 * (n + 1) bytes, each character a UCS-2 WORD, little-endian
+    (CODESYS's "WSTRING" page), a NUL WORD after them. A string holds only its text, so the bytes after its
+    terminator read 0 and a character written there is a fault."""
 
-    def __init__(self, length: int) -> None:
-        self.length, self.size = length, length + 1
+    def __init__(self, length: int, wide: bool = False) -> None:
+        self.length, self.wide = length, wide
+        self.unit = 2 if wide else 1
+        self.size = (length + 1) * self.unit
+        self.codec = "utf-16-le" if wide else "latin-1"
 
     def encode(self, value: str) -> bytes:
-        return value.encode("latin-1").ljust(self.size, b"\0")
+        try:
+            data = value.encode(self.codec)
+        except UnicodeEncodeError:
+            data = b""
+        if len(data) != len(value) * self.unit:  # a STRING's 'П' (a CoDeSys 2.3 file's cp1251): its byte is unknown
+            unheld = unheld_character(value, self.wide) or value[0]
+            raise PlcRuntimeError(INVALID_ARGUMENT, f"the bytes of {self._name}: {unheld_message(unheld, self.wide)}")
+        return data.ljust(self.size, b"\0")
 
     def decode(self, data: bytes) -> str:
-        return data.split(b"\0", 1)[0].decode("latin-1")
+        if not self.wide:
+            return data.split(b"\0", 1)[0].decode("latin-1")
+        end = next((i for i in range(0, len(data) - 1, 2) if not data[i] and not data[i + 1]), len(data) & ~1)
+        text = data[:end]
+        if any(0xD8 <= text[i] <= 0xDF for i in range(1, len(text), 2)):  # a surrogate: no UCS-2 character
+            what = f"the bytes {text.hex()} for a WSTRING, which are no UCS-2 text (a WORD 16#D800..16#DFFF)"
+            raise PlcRuntimeError(INDEX_RANGE, f"reading through a pointer gives {what}")
+        return text.decode("utf-16-le")
 
     def read(self, value: str, offset: int, size: int) -> bytes:
         return self.encode(value)[offset : offset + size]
@@ -111,10 +132,17 @@ class String:
     def write(self, value: str, offset: int, data: bytes) -> str:
         whole = bytearray(self.encode(value))
         whole[offset : offset + len(data)] = data
-        new = self.decode(bytes(whole))
+        try:
+            new = self.decode(bytes(whole))
+        except PlcRuntimeError:
+            raise _not_kept(f"the bytes {bytes(whole).hex()} for a {self._name}, which are no UCS-2 text") from None
         if len(new) > self.length or self.encode(new) != whole:
-            raise _not_kept(f"a STRING[{self.length}] with characters after its terminator (or none)")
+            raise _not_kept(f"a {self._name} with characters after its terminator (or none)")
         return new
+
+    @property
+    def _name(self) -> str:
+        return f"{'WSTRING' if self.wide else 'STRING'}[{self.length}]"
 
 
 class ArrayLayout:
@@ -201,8 +229,8 @@ def layout(spec: tuple) -> Any:
         return Scalar("<f" if spec[1] == 4 else "<d", spec[1], "real")
     if kind == "bool":
         return Scalar("<B", 1, "bool")
-    if kind == "string":
-        return String(spec[1])
+    if kind in ("string", "wstring"):
+        return String(spec[1], kind == "wstring")
     if kind == "struct":
         return StructLayout(spec[1], spec[2], spec[4])
     if kind == "range":
@@ -236,6 +264,32 @@ class ViewRef(Ref):
             raise pointer_outside_bytes(f"the pointer {self.text}", self.offset, size, self.whole.size)
         return self.c if self.k is None else self.c[self.k]  # type: ignore[index]  # see __init__
 
+    def _span(self) -> int:
+        """The bytes an access covers: what it sees, but a STRING seen only up to the variable's end when that comes
+        first (CODESYS reads a STRING up to its terminator: ``POINTER TO STRING`` over a STRING[4], moved by 2)."""
+        if isinstance(self.seen, String):
+            return max(0, min(self.seen.size, self.whole.size - self.offset))
+        return self.seen.size
+
+    def _read(self, value: object, span: int) -> bytes:
+        """The ``span`` bytes seen from ``offset``; a STRING's text must end inside them (else it reads on past the
+        variable: a fault naming the bytes it would reach)."""
+        data = self.whole.read(value, self.offset, span)
+        if span < self.seen.size and not _terminated(data, self.seen):
+            raise pointer_outside_bytes(f"the pointer {self.text}", self.offset, span + self.seen.unit, self.whole.size)
+        return data
+
+    def _encoded(self, new: object, span: int) -> bytes:
+        """The bytes of ``new`` written from ``offset``: a STRING's text and terminator, and zeros up to ``span``
+        (after a terminator the variable holds nothing); a text reaching past the variable is a fault."""
+        data = self.seen.encode(new)
+        if span < self.seen.size:
+            if not _terminated(data[:span], self.seen):
+                needed = (len(new) + 1) * self.seen.unit  # type: ignore[arg-type]  # a str: the seen is a String
+                raise pointer_outside_bytes(f"the pointer {self.text}", self.offset, needed, self.whole.size)
+            data = data[:span]
+        return data
+
     @property
     def v(self) -> object:
         if isinstance(self.seen, ArrayLayout):  # each element is checked when it is read or written
@@ -244,17 +298,19 @@ class ViewRef(Ref):
         if isinstance(self.seen, StructLayout):  # each member is, as it is read or written
             self._target(self.seen.size)
             return StructView(self, self.seen)
-        value = self._target(self.seen.size)
+        span = self._span()
+        value = self._target(span)
         try:
-            return self.seen.decode(self.whole.read(value, self.offset, self.seen.size))
+            return self.seen.decode(self._read(value, span))
         except PlcRuntimeError as error:
             raise self._through(error, "read") from None
 
     @v.setter
     def v(self, new: object) -> None:
-        value = self._target(self.seen.size)
+        span = self._span()
+        value = self._target(span)
         try:
-            written = self.whole.write(value, self.offset, self.seen.encode(new))
+            written = self.whole.write(value, self.offset, self._encoded(new, span))
         except PlcRuntimeError as error:
             raise self._through(error, "written") from None
         if self.k is not None and written is not value:
@@ -263,9 +319,10 @@ class ViewRef(Ref):
     def trial(self, key: object, new: object) -> None:
         """Fault as writing ``new`` would, on a copy: nothing is written (a user's write through the pointer, its
         pair ``(self, key)``, is refused when it is given: engine/paths.py)."""
-        value = deep_copy(self._target(self.seen.size))
+        span = self._span()
+        value = deep_copy(self._target(span))
         try:
-            self.whole.write(value, self.offset, self.seen.encode(new))
+            self.whole.write(value, self.offset, self._encoded(new, span))
         except PlcRuntimeError as error:
             raise self._through(error, "written") from None
 
@@ -279,7 +336,7 @@ class ViewRef(Ref):
     def pair(self) -> tuple[object, object]:
         """``(self, "v")``: a VAR_IN_OUT or an online path reaches the bytes through ``v``; checked here, so an
         online path through a pointer outside its variable (or dangling) names no variable (engine/paths.py)."""
-        self._target(0 if isinstance(self.seen, ArrayLayout) else self.seen.size)
+        self._target(0 if isinstance(self.seen, ArrayLayout) else self._span())
         return (self, "v")
 
     def at(self, offset: int, seen: Any) -> ViewRef:
@@ -314,6 +371,13 @@ class ViewRef(Ref):
 
     def __hash__(self) -> int:
         return hash((id(self.c), self.k, self.offset))
+
+
+def _terminated(data: bytes, seen: Any) -> bool:
+    """``data`` holds a STRING's terminator (a NUL byte; a WSTRING's a NUL WORD at an even byte)."""
+    if not seen.wide:
+        return b"\0" in data
+    return any(not data[i] and not data[i + 1] for i in range(0, len(data) - 1, 2))
 
 
 class ArrayView(Seen):

@@ -24,6 +24,7 @@ import math
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from functools import cache
+from typing import Any
 
 from ...iec.values import INLINE_NAMES, resolve, store_expr
 from ..errors import DOMAIN, INVALID_ARGUMENT, OVERFLOW, TRUNCATED, PlcWarning
@@ -45,6 +46,8 @@ class Impl:
     ``store``: replaces ``values.store_expr`` for this result, with ``{x}``.
     ``names``: extra per-specialisation globals; their presence disables inlining.
     ``precheck``: run first by the checked form; a warning it returns wins.
+    ``guard``: the plain call's check of the exact value, which raises (a fault) where the checked form (ENO) warns
+    and returns it otherwise: a result no wrap may stand in for (a duration or a date outside its type).
     """
 
     exact: str
@@ -52,6 +55,7 @@ class Impl:
     store: str | None = None
     names: Mapping[str, object] = field(default_factory=dict)
     precheck: Precheck | None = None
+    guard: Callable[[Any], Any] | None = None
 
     def body(self) -> str:
         if self.result is None:
@@ -84,7 +88,16 @@ def specialise(name: str, impl: Impl, arity: int) -> Specialised:
     body = impl.body()
     fast = compile_expr(body, arity, impl.names)
     template = None if impl.names else inline_template(body, arity)
-    return Specialised(fast, _checked(name, impl, arity, fast), template, _wrapped_templates(impl, arity))
+    checked = _checked(name, impl, arity, fast)
+    if impl.guard is not None:
+        fast, template = _guarded(impl, arity), None
+    return Specialised(fast, checked, template, _wrapped_templates(impl, arity))
+
+
+def _guarded(impl: Impl, arity: int) -> Callable:
+    """The plain call of an Impl with a guard: the exact value checked by it, then stored."""
+    exact, store, guard = compile_expr(impl.exact, arity, impl.names), compile_expr(_store_of(impl), 1), impl.guard
+    return lambda *args: store(guard(exact(*args)))  # type: ignore[misc]  # guard is set (specialise)
 
 
 def _wrapped_templates(impl: Impl, arity: int) -> tuple[str, str] | None:

@@ -19,14 +19,16 @@
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Callable
 from functools import cache
 
-from ...iec.elementary import canonical_type_name, per_day
+from ...iec.elementary import ELEMENTARY, canonical_type_name, per_day
+from ...iec.literals import unheld_character, unheld_message
 from ...iec.stdlib import CONVERSION_SPELLINGS
 from ...iec.value_text import format_value, parse
 from ...iec.values import MS_PER_DAY, TypeRef, default_value, resolve, value_range
-from ..errors import NOT_A_NUMBER, PlcWarning
+from ..errors import INVALID_ARGUMENT, NOT_A_NUMBER, OVERFLOW, PlcRuntimeError, PlcWarning
 from .build import HELPERS, Impl, finite_args, specialise
 from .functions import reject
 
@@ -73,7 +75,21 @@ def _to_integer_like(s: TypeRef, d: TypeRef) -> Impl:
         exact = f"ll__day({exact}, {per_day(d.elem)})"
     if src_range and dst_range[0] <= src_range[0] and src_range[1] <= dst_range[1]:  # type: ignore[index]
         return Impl(exact)  # widening: the value always fits
+    if d.category in ("time", "date", "dt"):  # a duration or a date has no wrap: outside its range a call faults
+        fit = functools.partial(_fit_time, name=name, target=d.name, low=dst_range[0], high=dst_range[1])
+        return Impl(exact, d.name, precheck=precheck, guard=fit)
     return Impl(exact, d.name, precheck=precheck)
+
+
+def _fit_time(value: int, name: str, target: str, low: int, high: int) -> int:
+    """``value`` (a count of ms or ns) unchanged when a ``target`` holds it; a fault (``overflow``) otherwise: no
+    wrapped or saturated duration or date stands in for the result (LTIME_TO_TIME(LTIME#30d), DATE_TO_TIME of any
+    date after 1970-01-25). With ENO wired the checked form says so instead (ENO FALSE, IEC 61131-3 ed. 3 6.6.2.2)."""
+    if low <= value <= high:
+        return value
+    unit = "ms" if ELEMENTARY[target].unit_ns == 1_000_000 else "ns"
+    bounds = f"{format_value(low, target)}..{format_value(high, target)}"
+    raise PlcRuntimeError(OVERFLOW, f"{name} gives {value} {unit}, outside {target} ({bounds})")
 
 
 def _from_text(d: TypeRef) -> Impl:
@@ -96,27 +112,42 @@ def _from_text(d: TypeRef) -> Impl:
     return Impl("ll__parse(a0)", result, names={"ll__parse": parsed}, precheck=precheck)
 
 
-def conversion_function(src: str, dst: str):
-    """The registry's implement() for SRC_TO_DST: checks the argument type, takes STRING[n] from the result."""
+def conversion_function(src: str, dst: str, narrowed: bool = False):
+    """The registry's implement() for SRC_TO_DST: checks the argument type, takes STRING[n] from the result;
+    ``narrowed``: WSTRING_TO_STRING, whose characters must be ones a STRING holds."""
 
     def implement(types: tuple[str, ...], result: str | None) -> Impl:
         if resolve(types[0]).name != resolve(src).name:
             raise reject(f"{src}_TO_{dst}", types)
         target = result if result and resolve(dst).category == "string" else dst
-        return conversion(src, target)
+        return _to_latin1(target) if narrowed else conversion(src, target)
 
     return implement
 
 
-def conversion_names() -> dict[str, tuple[str, str]]:
+def conversion_names() -> dict[str, tuple[str, str, bool]]:
     """Every SRC_TO_DST name with long and short spellings (FUN-10: DT_TO_TOD = DATE_AND_TIME_TO_TIME_OF_DAY), and
-    WSTRING's, which the value model holds as a STRING (a Python str)."""
+    WSTRING's, which the value model holds as a STRING (a Python str): ``(src, dst, narrowed)``, narrowed for
+    WSTRING_TO_STRING."""
     return {
-        f"{a}_TO_{b}": (value_type_name(a), value_type_name(b))
+        f"{a}_TO_{b}": (value_type_name(a), value_type_name(b), a.upper() == "WSTRING" and b.upper() == "STRING")
         for a in CONVERSION_SPELLINGS
         for b in CONVERSION_SPELLINGS
         if canonical_type_name(a) != canonical_type_name(b)
     }
+
+
+def _to_latin1(dst: str) -> Impl:
+    """WSTRING_TO_STRING: the same characters, each one a STRING holds (CODESYS's STRING is Latin-1); CODESYS
+    documents no byte for any other, so one is a fault (``invalid_argument``) rather than a made-up character."""
+
+    def latin1(text: str) -> str:
+        unheld = unheld_character(text, wide=False)
+        if unheld is not None:
+            raise PlcRuntimeError(INVALID_ARGUMENT, f"WSTRING_TO_STRING: {unheld_message(unheld, False)}")
+        return text
+
+    return Impl("ll__latin1(a0)", dst, names={"ll__latin1": latin1})
 
 
 def value_type_name(name: str) -> str:
