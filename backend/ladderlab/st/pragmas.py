@@ -83,21 +83,20 @@ def misplaced_pack_modes(text: str, file: str | None = None, pou: str | None = N
 
 def _misplaced(pragma: re.Match[str], starts: list[int], file: str | None, pou: str | None) -> Diagnostic:
     """ST-PRAGMA at ``pragma``: it stands above no STRUCT's TYPE declaration, so it packs nothing."""
-    line, column = _position(starts, pragma.start())
-    end_line, end_column = _position(starts, pragma.end())
-    return Diagnostic(
-        severity="warning",
-        code="ST-PRAGMA",
-        message=(
-            "the attribute 'pack_mode' has no effect here: it packs a STRUCT when it stands above the STRUCT's TYPE "
-            "declaration (a function block, a variable or a member keeps its layout); move it there or remove it"
+    return _at(
+        pragma,
+        starts,
+        Diagnostic(
+            severity="warning",
+            code="ST-PRAGMA",
+            message=(
+                "the attribute 'pack_mode' has no effect here: it packs a STRUCT when it stands above the STRUCT's "
+                "TYPE declaration (a function block, a variable or a member keeps its layout); move it there or "
+                "remove it"
+            ),
+            file=file,
+            pou=pou,
         ),
-        file=file,
-        pou=pou,
-        line=line,
-        column=column,
-        end_line=end_line,
-        end_column=end_column,
     )
 
 
@@ -108,24 +107,16 @@ def unsupported_pragmas(text: str, file: str | None = None, pou: str | None = No
     if "call_after_init" not in text.lower():
         return []
     starts = _line_starts(text)
-    out = []
-    for pragma in _pragmas(text, _CALL_AFTER_INIT):
-        line, column = _position(starts, pragma.start())
-        end_line, end_column = _position(starts, pragma.end())
-        out.append(
-            Diagnostic(
-                severity="error",
-                code="IR-UNSUPPORTED",
-                message=CALL_AFTER_INIT_REFUSED,
-                file=file,
-                pou=pou,
-                line=line,
-                column=column,
-                end_line=end_line,
-                end_column=end_column,
-            )
-        )
-    return out
+    refused = Diagnostic(severity="error", code="IR-UNSUPPORTED", message=CALL_AFTER_INIT_REFUSED, file=file, pou=pou)
+    return [_at(pragma, starts, refused) for pragma in _pragmas(text, _CALL_AFTER_INIT)]
+
+
+def _at(pragma: re.Match[str], starts: list[int], diagnostic: Diagnostic) -> Diagnostic:
+    """``diagnostic`` located at ``pragma``'s text (``starts``: the offsets where its text's lines start)."""
+    line, column = _position(starts, pragma.start())
+    end_line, end_column = _position(starts, pragma.end())
+    place = {"line": line, "column": column, "end_line": end_line, "end_column": end_column}
+    return diagnostic.model_copy(update=place)
 
 
 def _pack_modes(text: str) -> Iterator[re.Match[str]]:
