@@ -68,3 +68,9 @@ NESTED_LOOPS = """IF Go THEN
         END_FOR;
     END_FOR;
 END_IF;"""
+
+
+def line_of(text: str, statement: str) -> int:
+    """The line of ``text`` on which ``statement`` stands, a whole line written in one place only."""
+    (line,) = [number for number, row in enumerate(text.splitlines(), 1) if row == statement]
+    return line

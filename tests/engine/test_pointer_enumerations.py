@@ -17,6 +17,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from tests.support import line_of
+
 from .ed3_support import build, errors, program
 
 TYPES = """TYPE Mode : (off, slow, fast); END_TYPE
@@ -39,12 +41,6 @@ VAR_OUTPUT q : POINTER TO Mode; END_VAR
 VAR v : Mode; END_VAR
 q := ADR(v);
 END_FUNCTION_BLOCK"""
-
-
-def _line(text: str, statement: str) -> int:
-    """The line of the text on which ``statement`` stands (the one place it is written)."""
-    (line,) = [number for number, row in enumerate(text.splitlines(), 1) if row == statement]
-    return line
 
 
 # (declarations, body writing k (the scan number) into a Mode through the path, the variable, what the fault names,
@@ -81,7 +77,7 @@ def test_a_write_through_another_type_keeps_an_enumeration_to_its_members_scan_b
         "subrange_violation",
         f"3 is none of the values of the enumeration MODE: written through {through}",
     )
-    assert (sim.fault.pou, sim.fault.origin.line) == (pou, _line(text, statement))
+    assert (sim.fault.pou, sim.fault.origin.line) == (pou, line_of(text, statement))
     assert sim.read(f"Main.{path}") == 2
 
 
@@ -99,7 +95,7 @@ def test_the_high_byte_written_into_an_enumeration_faults_in_every_variant(varia
         "subrange_violation",
         "258 is none of the values of the enumeration MODE: written through ADR(m) + 1",
     )
-    assert sim.fault.origin.line == _line(text, "p^ := INT_TO_BYTE(k - 1);") and sim.read("Main.m") == 2
+    assert sim.fault.origin.line == line_of(text, "p^ := INT_TO_BYTE(k - 1);") and sim.read("Main.m") == 2
 
 
 def test_read_through_another_type_an_enumeration_is_its_base_integer():
@@ -144,7 +140,7 @@ def test_a_pointer_to_an_enumeration_faults_reading_an_integer_that_is_no_member
         "subrange_violation",
         "3 is none of the values of the enumeration MODE: read through ADR(x)",
     )
-    assert sim.fault.origin.line == _line(text, "n := p^;") and sim.read("Main.n") == 2
+    assert sim.fault.origin.line == line_of(text, "n := p^;") and sim.read("Main.n") == 2
 
 
 def test_a_struct_holding_an_enumeration_has_codesys_s_layout_and_size():
@@ -176,7 +172,7 @@ buf[2] := buf[2] + 4;"""
         "subrange_violation",
         "7 is none of the values of the enumeration MODE: read through ADR(buf) + 2",
     )
-    assert sim.fault.origin.line == _line(text, "m := pr^.m;")
+    assert sim.fault.origin.line == line_of(text, "m := pr^.m;")
 
 
 def test_a_pointer_reference_or_in_out_of_the_enumeration_itself_works():
@@ -194,7 +190,7 @@ n := SetMode(m3);"""
     assert [sim.read(f"Main.{name}") for name in ("m1", "m2", "m3")] == [1, 2, 2]
     text = program("m : Mode; n : INT;", "n := SetInt(m, 1);", TYPES)
     assert errors(text) == [
-        f"Main/body:{_line(text, 'n := SetInt(m, 1);')}:13, POU Main: error ST-TYPE-MISMATCH: in-out parameter x of "
+        f"Main/body:{line_of(text, 'n := SetInt(m, 1);')}:13, POU Main: error ST-TYPE-MISMATCH: in-out parameter x of "
         "SetInt needs an INT, got Mode"
     ]
 

@@ -20,6 +20,7 @@ from hypothesis import strategies as st
 from ladderlab.model.project import Pou
 from ladderlab.simulation.build import build_project
 from tests.ir.diagram_support import box, ld_pou, project, rung
+from tests.support import line_of
 
 from .ed3_support import build, errors, program
 
@@ -54,12 +55,6 @@ VAR_IN_OUT io : INT; END_VAR
 VAR_INPUT n : INT; END_VAR
 io := n;
 END_FUNCTION_BLOCK"""
-
-
-def _line(text: str, statement: str) -> int:
-    """The line of the text on which ``statement`` stands (the one place it is written)."""
-    (line,) = [number for number, row in enumerate(text.splitlines(), 1) if row == statement]
-    return line
 
 
 # (declarations, body writing k * 40 into the subrange through the path, the variable read, what the fault names,
@@ -102,7 +97,7 @@ def test_a_write_through_a_pointer_keeps_a_subrange_in_its_range_scan_by_scan(
         "subrange_violation",
         f"120 is outside the subrange 0..100: written through {through}",
     )
-    assert (fault.pou, fault.origin.line) == (pou, _line(text, statement))
+    assert (fault.pou, fault.origin.line) == (pou, line_of(text, statement))
     assert sim.read(f"Main.{path}") == 80
 
 
@@ -119,7 +114,7 @@ def test_a_byte_written_into_a_subrange_faults_when_the_whole_leaves_it(variant)
         "subrange_violation",
         "306 is outside the subrange 0..100: written through ADR(v) + 1",
     )
-    assert sim.fault.origin.line == _line(text, "p^ := INT_TO_BYTE(k - 1);") and sim.read("Main.v") == 50
+    assert sim.fault.origin.line == line_of(text, "p^ := INT_TO_BYTE(k - 1);") and sim.read("Main.v") == 50
 
 
 def test_a_whole_array_written_through_a_pointer_faults_at_the_element_outside_the_range():
@@ -147,7 +142,7 @@ def test_a_pointer_to_a_subrange_faults_reading_a_value_outside_it():
         "subrange_violation",
         "130 is outside the subrange 0..100: read through ADR(x)",
     )
-    assert sim.fault.origin.line == _line(text, "w := p^;") and sim.read("Main.w") == 30
+    assert sim.fault.origin.line == line_of(text, "w := p^;") and sim.read("Main.w") == 30
 
 
 def test_a_pointer_to_an_array_element_shows_and_compares_as_that_element():
@@ -174,7 +169,7 @@ END_FUNCTION""",
     )
     found = errors(text)
     assert found == [
-        f"POU MAIN line {_line(text, 'n := Fill(a);')} column 1: error ENGINE-COMPILE: an ARRAY [1..3] OF INT (0..100) "
+        f"POU MAIN line {line_of(text, 'n := Fill(a);')} column 1: error ENGINE-COMPILE: an ARRAY [1..3] OF INT (0..100) "
         "cannot be passed to a VAR_IN_OUT ARRAY [1..3] OF INT: the subrange of its elements would go unchecked (pass "
         "an array of the parameter's element type)"
     ]
@@ -235,7 +230,7 @@ def test_an_array_assigned_whole_into_an_array_of_a_subrange_has_every_element_c
     assert sim.read(f"Main.{path}") == first
     sim.cycle(1)
     assert (sim.fault.code, sim.fault.message) == ("subrange_violation", "120 is outside the subrange 0..100")
-    assert sim.fault.origin.line == _line(text, statement) and sim.read(f"Main.{path}") == first
+    assert sim.fault.origin.line == line_of(text, statement) and sim.read(f"Main.{path}") == first
 
 
 def test_an_array_seen_over_other_memory_is_copied_when_passed_by_value():
