@@ -2,13 +2,13 @@
 // the tabs that are no POU (a panel: editor and online view; the exercise statement; their content is
 // ShellTab.tsx, loaded on first use). Tab keys start with PANEL_TAB or are EXERCISE_TAB (store/parts.ts), which
 // no POU name can be (both hold a ':').
-import { useState, type FormEvent } from "react";
 import { createStore } from "zustand/vanilla";
 import type { Panel } from "../generated/api";
 import { useWorkspace, workspaceStore } from "../store/project";
 import { panelChange, withPanel } from "./history";
 import { newPanel } from "./model";
 import { EXERCISE_TAB, partLabel } from "../store/parts";
+import { NewNameForm } from "../ui/NewNameForm";
 
 export { EXERCISE_TAB };
 
@@ -28,20 +28,13 @@ export function PanelsTree() {
   const exercise = useWorkspace((s) => s.project?.exercise ?? "");
   const active = useWorkspace((s) => s.active);
   const changed = useWorkspace((s) => s.changed);
-  const [adding, setAdding] = useState(false);
-  const [name, setName] = useState("");
-  const [error, setError] = useState<string | null>(null);
   const open = (key: string) => workspaceStore.getState().openTab(key);
-  const add = (e: FormEvent) => {
-    e.preventDefault();
-    const text = name.trim();
-    if (!NAME.test(text)) return setError(`${text || "An empty name"} is not a name (letters, digits and _).`);
-    if (panels.some((p) => p.name.toUpperCase() === text.toUpperCase())) return setError(`There is a panel ${text}.`);
+  const add = (text: string): string | null => {
+    if (!NAME.test(text)) return `${text || "An empty name"} is not a name (letters, digits and _).`;
+    if (panels.some((p) => p.name.toUpperCase() === text.toUpperCase())) return `There is a panel ${text}.`;
     workspaceStore.getState().setProjectPart(panelChange(text), (project) => withPanel(project, newPanel(text)));
-    setAdding(false);
-    setName("");
-    setError(null);
     open(PANEL_TAB + text);
+    return null;
   };
   return (
     <>
@@ -71,26 +64,7 @@ export function PanelsTree() {
         ) : (
           <p className="tree-empty">none</p>
         )}
-        {adding ? (
-          <form className="new-pou" aria-label="New panel" onSubmit={add}>
-            <input
-              aria-label="Panel name"
-              autoFocus
-              value={name}
-              onChange={(e) => setName(e.target.value)}
-              spellCheck={false}
-            />
-            <button type="submit">Create</button>
-            <button type="button" onClick={() => setAdding(false)}>
-              Cancel
-            </button>
-            {error ? <p role="alert">{error}</p> : null}
-          </form>
-        ) : (
-          <button type="button" onClick={() => setAdding(true)}>
-            New panel
-          </button>
-        )}
+        <NewNameForm formLabel="New panel" inputLabel="Panel name" buttonLabel="New panel" create={add} />
       </section>
       <section>
         <h3>Exercise</h3>

@@ -1,10 +1,11 @@
 // The project tree's Global variable lists section (CODESYS's GVLs): each list opens in its tab; its "⋯" menu
 // renames it everywhere (its qualifier in every GVL.x too) or deletes it, listing what uses its name; New list
 // adds one. Each is one undoable step of the working copy, through the POUs' dialogs (dialogs.tsx).
-import { useMemo, useState, type FormEvent } from "react";
+import { useMemo } from "react";
 import type { GlobalVariableList } from "../generated/api";
 import { gvlTab, newGvlProblem, withNewGvl } from "../store/gvls";
 import { useWorkspace, workspaceStore } from "../store/project";
+import { NewNameForm } from "../ui/NewNameForm";
 import { TreeActions } from "../ui/TreeActions";
 import { DeleteDialog, RenameDialog } from "./lazyDialogs";
 import { gvlOperations } from "./operations";
@@ -15,21 +16,14 @@ export function GvlsTree() {
   const gvls = useWorkspace((s) => s.project?.gvls ?? NO_GVLS);
   const active = useWorkspace((s) => s.active);
   const changed = useWorkspace((s) => s.changed);
-  const [adding, setAdding] = useState(false);
-  const [name, setName] = useState("");
-  const [error, setError] = useState<string | null>(null);
-  const add = (e: FormEvent) => {
-    e.preventDefault();
+  const add = (wanted: string): string | null => {
     const ws = workspaceStore.getState();
-    if (!ws.project) return;
-    const wanted = name.trim();
+    if (!ws.project) return null;
     const problem = newGvlProblem(ws.project, wanted);
-    if (problem) return setError(problem);
+    if (problem) return problem;
     ws.setProjectPart(gvlTab(wanted), (project) => withNewGvl(project, wanted));
-    setAdding(false);
-    setName("");
-    setError(null);
     ws.openPou(gvlTab(wanted));
+    return null;
   };
   return (
     <section aria-label="Global variable lists">
@@ -60,26 +54,7 @@ export function GvlsTree() {
       ) : (
         <p className="tree-empty">none</p>
       )}
-      {adding ? (
-        <form className="new-pou" aria-label="New global variable list" onSubmit={add}>
-          <input
-            aria-label="List name"
-            autoFocus
-            value={name}
-            onChange={(e) => setName(e.target.value)}
-            spellCheck={false}
-          />
-          <button type="submit">Create</button>
-          <button type="button" onClick={() => setAdding(false)}>
-            Cancel
-          </button>
-          {error ? <p role="alert">{error}</p> : null}
-        </form>
-      ) : (
-        <button type="button" onClick={() => setAdding(true)}>
-          New list
-        </button>
-      )}
+      <NewNameForm formLabel="New global variable list" inputLabel="List name" buttonLabel="New list" create={add} />
     </section>
   );
 }
