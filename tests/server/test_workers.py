@@ -171,12 +171,18 @@ def test_a_process_that_stops_answering_is_ended_and_a_reset_starts_a_new_one(
         assert info["state"] == "faulted" and info["fault"]["message"] == log["message"]
         ws.send_json({"type": "single_cycle"})
         assert recv_until(ws, of_type("error"))[0]["message"] == log["message"]
+        seq_before = handle.frame.seq
         reset = client.post(f"/api/simulations/{sim_id}/reset").json()
         assert (reset["state"], reset["scan_count"], reset["fault"]) == ("stopped", 0, None)
         assert handle.process.pid != old.pid and handle.process.is_alive()
         note, _ = recv_until(ws, log_of("system"))
         assert note["message"].startswith("started again in a new process")
         recv_until(ws, of_type("status", state="stopped"))
+        # the new process's values replace the old one's (its frames were taken for ones already sent when their
+        # numbers met: the client kept COUNT 1 and saw no change at the next scan)
+        values, _ = recv_until(ws, of_type("values", scan=0))
+        assert values["changed"] == {"MAIN.COUNT": 0}
+        assert handle.frame.seq > seq_before  # the new process's frames come after the old one's
         ws.send_json({"type": "single_cycle"})  # the subscription was sent to the new process
         values, _ = recv_until(ws, of_type("values", scan=1))
         assert values["changed"] == {"MAIN.COUNT": 1}

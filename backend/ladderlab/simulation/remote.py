@@ -133,6 +133,9 @@ class SimulationHandle:
         self.io: list[dict[str, Any]] = []  # the addresses the program uses (Simulation.io_points), plain data
         self.info: dict[str, Any] = {}
         self.frame = EMPTY_FRAME
+        #: the seq of the last frame before this process started: a new process counts its frames from 1 again,
+        #: and a client that was sent the old process's frame of that seq would take the new one for it
+        self._seq_base = 0
         self.status = Status(type="status", state="stopped")
         self.history: deque[Log] = deque(maxlen=settings.log_entries)
         self.dropped_log_entries = 0
@@ -163,6 +166,7 @@ class SimulationHandle:
         with self._lock:
             self._process, self._connection, self._ready = process, connection, ready
             self._launched = self.last_heard = time.monotonic()
+            self._seq_base = self.frame.seq
         self.hub.watch(connection, self)
         try:
             ready.result()
@@ -369,7 +373,7 @@ class SimulationHandle:
             forced = tuple(message["forced"]) if message["forced"] is not None else old.forced
             injected = message["injected"] if message.get("injected") is not None else old.injected
             self.frame = Frame(
-                message["seq"],
+                self._seq_base + message["seq"],
                 message["scan"],
                 message["time_ms"],
                 message["wall"],
