@@ -25,6 +25,21 @@ describe("the Types editor's list", () => {
     ]);
   });
 
+  it("lists no enumeration value with an explicit value and no initial value as a type; an enumeration with its base type first is one", () => {
+    const text = [
+      "TYPE",
+      "    Mode : (Idle, Run := 5, Halt) := Idle;",
+      "    Speed : INT (Slow := 1, Fast := 9);",
+      "    Level : (Low, High) DWORD := High;",
+      "END_TYPE",
+    ].join("\n");
+    expect(typeRows(text).map((r) => [r.name, r.kind])).toEqual([
+      ["Mode", "enum"],
+      ["Speed", "enum"],
+      ["Level", "enum"],
+    ]);
+  });
+
   it("adds a type as a block of its own that lists again", () => {
     const text = withNewType(withNewType("", "Cell", "struct"), "State", "enum");
     expect(typeRows(text).map((r) => [r.name, r.kind])).toEqual([

@@ -39,12 +39,25 @@ function typeDeclarations(text: string): TypeDeclaration[] {
     const start = b.index + 4;
     // STRUCT members are no types: blank them, keeping offsets.
     const top = b[1]!.replace(/\bSTRUCT\b[\s\S]*?\bEND_STRUCT\b/gi, (s) => "STRUCT" + " ".repeat(s.length - 6));
-    const decl = /(?:^|[;\s])([A-Za-z_][A-Za-z0-9_]*)\s*:\s*(STRUCT\b|\(|ARRAY\b|[A-Za-z_][A-Za-z0-9_]*\s*\(|)/gi;
+    // `name :` (not an enumeration value's or an initial value's `:=`)
+    const decl = /(?:^|[;\s])([A-Za-z_][A-Za-z0-9_]*)\s*:(?!=)\s*(STRUCT\b|\(|ARRAY\b|[A-Za-z_][A-Za-z0-9_]*\s*\(|)/gi;
     for (let m = decl.exec(top); m; m = decl.exec(top)) {
       const at = start + m.index + m[0].indexOf(m[1]!);
       const head = m[2]!.toUpperCase();
+      // `INT (0..100)` is a subrange, `INT (Slow := 1, Fast)` an enumeration with its base type first (IEC ed. 3)
+      const values = top.slice(m.index + m[0].length, top.indexOf(")", m.index + m[0].length));
       const kind: TypeKind =
-        head === "STRUCT" ? "struct" : head === "(" ? "enum" : head === "ARRAY" ? "array" : head ? "subrange" : "alias";
+        head === "STRUCT"
+          ? "struct"
+          : head === "ARRAY"
+            ? "array"
+            : head === "("
+              ? "enum"
+              : head
+                ? values.includes("..")
+                  ? "subrange"
+                  : "enum"
+                : "alias";
       const semicolon = top.indexOf(";", m.index + m[0].length);
       const end = semicolon < 0 ? start + top.length : start + semicolon + 1;
       const line = text.slice(0, at).split("\n").length;
