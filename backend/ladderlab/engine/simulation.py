@@ -252,19 +252,7 @@ class Simulation:
         except Exception as error:
             for task in self._tasks:
                 task.stopped = True
-            self.faults.append(
-                make_fault(
-                    error,
-                    self.compiled.generated,
-                    self.compiled.filename,
-                    self._ns,
-                    task="(initialisation)" if function == "ll_fb_init" else "(reset)",
-                    time_ms=self.time_ms,
-                    scan=self.scan_count,
-                    instance_path=self._instance_path,
-                    places=self.compiled.program.places,
-                )
-            )
+            self._record_fault(error, "(initialisation)" if function == "ll_fb_init" else "(reset)", self.time_ms)
         finally:
             self._watchdog.deadline = float("inf")
 
@@ -478,13 +466,17 @@ class Simulation:
 
     def _fault(self, task: Task, error: Exception, now: float) -> None:
         task.stopped = True
+        self._record_fault(error, task.name, now)
+
+    def _record_fault(self, error: Exception, task: str, now: float) -> None:
+        """``error`` as a located fault of ``task`` (a task's name, or what ran outside the tasks) at ``now``."""
         self.faults.append(
             make_fault(
                 error,
                 self.compiled.generated,
                 self.compiled.filename,
                 self._ns,
-                task=task.name,
+                task=task,
                 time_ms=now,
                 scan=self.scan_count,
                 instance_path=self._instance_path,
