@@ -173,4 +173,5 @@ def test_a_bare_use_of_a_qualified_only_list_is_shown_at_its_line_and_a_list_var
     contact = page.locator('g.ld-element[data-id="c1"] .ld-badge').first
     expect(contact).to_have_attribute("data-value", "TRUE")
     expect(page.locator('g.ld-element[data-id="q1"] .ld-badge').first).to_have_attribute("data-value", "TRUE")
+    expect(page.locator('g.ld-element[data-id="q1"]')).to_have_class(re.compile(r"\bld-on\b"))  # the power flow too
     page.screenshot(path=str(ARTIFACTS / "gvl-online.png"))
