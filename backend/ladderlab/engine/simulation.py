@@ -164,7 +164,9 @@ class Simulation:
         self._viewed_since: dict[tuple[str, int], int] = {}  # (instance, network) -> the stamp it was viewed from
         self._record = True  # whether the next scans record the viewed networks (``record``)
         #: while scans record no network: (instance, its own ``ll_v`` flags), each holding a list of False instead
-        self._silenced: list[tuple[object, list[bool]]] | None = None
+        self._silenced: list[tuple[object, list[bool], list[bool]]] | None = None
+        #: (instance, its own flags, its list of False) of the instances with a viewed network, until ``view``
+        self._mutes: list[tuple[object, list[bool], list[bool]]] | None = None
         self._quiet_stamp = -1  # the stamp of the last scan that recorded no network (``quiet``)
         self._attach_debugger()
         self._initialise(warm=False)
@@ -230,6 +232,7 @@ class Simulation:
         """The process image cleared (the inputs stay as the world set them), the globals - program instances first
         (codegen/tasks.py) - then the VAR_CONFIG initial values, then (``implicit``) every instance's FB_init."""
         self._unsilence()  # (a restart may make new instances: the next quiet scans silence those)
+        self._mutes = None
         self._image.clear()
         self._ns["ll_init_globals"](warm)
         self._ns["ll_config_init"](warm)
@@ -733,6 +736,7 @@ class Simulation:
         state (``state``), so a restored scan knows which networks it recorded."""
         self._viewed = None if viewed is None else {key.strip().upper(): ids for key, ids in viewed.items()}
         self._unsilence()  # (the flags set are the real ones; the next quiet scan silences them again)
+        self._mutes = None
         for key, (obj, pou) in self._instances_by_path().items():
             table = self._context_probes(pou)
             if table is None or not table.networks:
@@ -774,18 +778,21 @@ class Simulation:
             self._silence()
 
     def _silence(self) -> None:
-        silenced = []
-        for obj, _pou in self._instances_by_path().values():
-            flags = getattr(obj, "ll_v", None)
-            if flags and True in flags:
-                silenced.append((obj, flags))
-                obj.ll_v = [False] * len(flags)  # type: ignore[attr-defined]  # generated POU classes are untyped
-        self._silenced = silenced
+        mutes = self._mutes
+        if mutes is None:
+            mutes = self._mutes = []
+            for obj, _pou in self._instances_by_path().values():
+                flags = getattr(obj, "ll_v", None)
+                if flags and True in flags:
+                    mutes.append((obj, flags, [False] * len(flags)))  # (nothing writes into it: unsilenced first)
+        for obj, _flags, off in mutes:
+            obj.ll_v = off  # type: ignore[attr-defined]  # generated POU classes and their namespace are untyped
+        self._silenced = mutes
 
     def _unsilence(self) -> None:
         """The instances' own flags back (``_fit_recording``); ``quiet`` still says what the last scan recorded."""
         if self._silenced is not None:
-            for obj, flags in self._silenced:
+            for obj, flags, _off in self._silenced:
                 obj.ll_v = flags  # type: ignore[attr-defined]  # generated POU classes and their namespace are untyped
             self._silenced = None
 
@@ -1119,6 +1126,7 @@ class Simulation:
             raise ValueError("that state was captured from another program")
         data = [*state.instances.values(), *state.globals.values()]
         self._unsilence()  # (the state's flags go into the instances' own lists)
+        self._mutes = None
         # a state that holds every value overwrites all an initialisation would set (about half a restore's time)
         self._reset(cold=True, initialise=any(holds_references(item) for item in data), implicit=False)
         for name, (pou, links) in state.attached.items():

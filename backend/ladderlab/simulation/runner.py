@@ -282,18 +282,24 @@ class SimRunner:
 
     def _records_next(self) -> bool:
         """Whether the scan the pacer runs next records the power flow of the viewed networks: only a scan a frame
-        may show does (docs/runtime.md, "Scans no frame shows"). A frame goes out after a scan when one falls due
-        before the scan after it could start (``publish_s`` after the last one), and after a command (commands
-        waiting record the next scan; ``_holding``). Every scan records while a run until is set (its condition
-        stops the run after any scan), of a program that checks the watchdog (a trip's moment depends on the
-        machine's speed: that scan could not be recomputed), or without a history (which recomputes the power
-        flow of a scan that ended with a runtime error: ``_replayed``, ``History.seek``)."""
+        may show does (docs/runtime.md, "Scans no frame shows"). A frame goes out after a scan when one is due
+        (``publish_s`` after the last: it is due before the scan, or the scan records nothing and the next one,
+        less than ``publish_s`` away, shows it), and after a command (commands waiting record the next scan, and
+        while the last one recorded nothing they wait for the next: ``_holding``). So a scan records when a frame
+        is due, when commands wait, or when the scan after it is ``publish_s`` away or more. Every scan records
+        while a run until is set (its condition stops the run after any scan), of a program that checks the
+        watchdog (a trip's moment depends on the machine's speed: that scan could not be recomputed), or without
+        a history (which recomputes the power flow of a scan that ended with a runtime error: ``History.seek``)."""
         pacer, sim = self._pacer, self.sim
         if pacer is None or self.history is None or self._commands or sim.variant != "monitor":
             return True
         if self._until is not None or self._until_ms is not None or sim.compiled.watched:
             return True
-        return pacer.wall_time(sim.following_scan_time()) - self._last_publish >= self.publish_s
+        now = self.clock()
+        return (
+            now - self._last_publish >= self.publish_s
+            or pacer.wall_time(sim.following_scan_time()) - now >= self.publish_s
+        )
 
     def _execute(self, op: str, args: dict[str, Any], reply: Reply) -> None:
         handler = self._OPS.get(op)
