@@ -40,6 +40,7 @@ class _Client:
         self.power: dict[str, object] = {}
         self.frames = 0
         self.faults: list[str] = []
+        self.failures: list[AssertionError] = []
 
     def status(self, state, at, stack) -> None: ...
 
@@ -48,6 +49,13 @@ class _Client:
             self.faults.append(entry["message"])
 
     def frame(self, frame) -> None:
+        """(A failed check is kept: the runner's thread loop would log an exception raised here and go on.)"""
+        try:
+            self._check(frame)
+        except AssertionError as error:
+            self.failures.append(error)
+
+    def _check(self, frame) -> None:
         assert self.runner is not None
         self.frames += 1
         states = frame["power"].get("MAIN", {})
@@ -81,6 +89,12 @@ def _runner(project: Project, speed: float) -> tuple[SimRunner, _Client, _Clock,
     runner = SimRunner(live, client, speed=speed, clock=clock, history_bytes=1 << 24)
     client.runner = runner
     return runner, client, clock, _networks(live)
+
+
+def _turn(runner: SimRunner, client: _Client) -> None:
+    """One turn of the runner's thread loop, then every check of the frames it sent."""
+    runner.turn()
+    assert not client.failures, client.failures[0]
 
 
 def _command(runner: SimRunner, op: str, **args) -> None:
@@ -117,16 +131,16 @@ def test_every_frame_of_a_running_simulation_shows_the_power_flow_of_its_scan(pr
             _command(runner, op)
         elif op == "single" and not runner._running:
             _command(runner, "single_cycle")
-        runner.turn()
+        _turn(runner, client)
         while runner._commands and not runner._holding():  # (serve's loop does not wait then)
-            runner.turn()
+            _turn(runner, client)
         if runner._commands:  # held for the next scan (at most publish_s away): they run once it ran
             assert runner._running and runner.sim.quiet
             assert runner._pacer is not None and runner._delay is not None and runner._delay <= runner.publish_s
     clock.now += 1.0
     _command(runner, "stop")
     for _ in range(3):
-        runner.turn()
+        _turn(runner, client)
     assert not runner._commands
     assert not runner.sim.quiet  # stopped after a recorded scan: a frame (and any later one) shows it
 
@@ -137,14 +151,14 @@ def test_at_100x_only_the_scans_before_a_frame_record():
     runner, client, clock, _networks_ = _runner(project, 100.0)
     _command(runner, "watch", key="client", paths=[], elements=[("Main", ["a", "c"])])
     _command(runner, "run")
-    runner.turn()
+    _turn(runner, client)
     decisions: list[bool] = []
     decide = runner._records_next
     runner._records_next = lambda: decisions.append(decide()) or decisions[-1]  # type: ignore[method-assign]
     frames = client.frames
     for _ in range(200):  # 0.2 s of wall time at 1 ms a turn: 2,000 scans
         clock.now += 0.001
-        runner.turn()
+        _turn(runner, client)
     assert len(decisions) == 2000
     assert 9 <= client.frames - frames <= 11
     assert sum(decisions) <= 2 * (client.frames - frames)
@@ -167,10 +181,10 @@ def test_a_runtime_error_in_a_quiet_scan_shows_that_scans_power_flow_recomputed_
     ids = ["a", "c", "s", "d", "o"]
     _command(runner, "watch", key="client", paths=["Main.Z"], elements=[("Main", ids)])
     _command(runner, "run")
-    runner.turn()
+    _turn(runner, client)
     for _ in range(5):
         clock.now += 0.013
-        runner.turn()
+        _turn(runner, client)
     assert runner._running
     # START set as the world would set it: applied at the start of the next scan, which faults; quiet scans before
     # it (a write is a command: it waits for a recorded scan, so the fault needs a scan that is not the next one)
@@ -178,7 +192,7 @@ def test_a_runtime_error_in_a_quiet_scan_shows_that_scans_power_flow_recomputed_
     frames = client.frames
     live.write("Main.START", True)  # (not a command: the world's input between two quiet scans of a batch)
     clock.now += 0.002  # two scans at 100x, the first (quiet, no frame due) faults
-    runner.turn()
+    _turn(runner, client)
     assert client.faults and "division by zero" in client.faults[0]
     assert not runner._running
     fault_scan = live.fault.scan
@@ -187,5 +201,5 @@ def test_a_runtime_error_in_a_quiet_scan_shows_that_scans_power_flow_recomputed_
     assert set(client.power) == set(ids)  # every element known: the scan recomputed
     # a seek to the faulted scan later shows the same (the checkpoint after it holds the silenced flags)
     _command(runner, "seek", scan=fault_scan + 1)
-    runner.turn()
+    _turn(runner, client)
     assert client.power == {e: v for e, v in _shown(client.reference, ids).items()}
