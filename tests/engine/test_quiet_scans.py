@@ -14,6 +14,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from ladderlab.engine.simulation import Simulation
+from ladderlab.engine.tasks import Schedule, Task
 from ladderlab.model import ld
 from ladderlab.model.project import Pou, Project
 from tests.engine.test_fast_equals_debug import BOOLS, ld_programs
@@ -146,3 +147,26 @@ def test_quiet_scans_run_the_twins_without_probes_and_leave_the_flags_as_viewed(
     assert view.unknown == frozenset()
     assert view.values == {"a3": True, "c3": True}
     assert view.executed == {"a3", "c3"}
+
+
+@fuzz_settings(fast=50)
+@given(
+    intervals=st.lists(st.sampled_from([None, 1.0, 2.5, 10.0, 20.0, 30.0]), min_size=1, max_size=4),
+    plant=st.booleans(),
+    scans=st.integers(0, 30),
+)
+def test_the_scan_after_the_next_one_is_due_when_the_schedule_says(intervals, plant, scans):
+    """``Schedule.following_time`` (what the runner's choice looks ahead to) is ``next_time`` once ``advance`` ran,
+    for cyclic tasks, SINGLE tasks (the idle scans every 10 ms) and a plant task, at any point of the schedule."""
+    tasks = [
+        Task(f"T{i}", interval, 0, [], i, next_due=interval or 0.0, single=None if interval else "G.S")
+        for i, interval in enumerate(intervals)
+    ]
+    if plant:
+        tasks.append(Task("PLANTS", 5.0, 0, [], len(tasks), next_due=5.0, plant=True))
+    schedule = Schedule(tasks)
+    for _ in range(scans):
+        schedule.advance()
+    following = schedule.following_time()
+    schedule.advance()
+    assert following == schedule.next_time()

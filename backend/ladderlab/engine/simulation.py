@@ -330,9 +330,9 @@ class Simulation:
     def run_for(self, ms: float) -> int:
         """Run every scan due within the next ``ms`` of virtual time; returns how many completed."""
         self._not_halted()
-        if self._record is (self._silenced is not None):
-            self._fit_recording()
         end, done = self.time_ms + ms, 0
+        if self._record is (self._silenced is not None) and self._schedule.next_time() <= end:
+            self._fit_recording()  # (only before a scan: silenced flags say the last scan recorded nothing)
         while self._schedule.next_time() <= end:
             now, due = self._schedule.advance()
             if not self._scan_now(now, due, scheduled=True):
@@ -345,9 +345,10 @@ class Simulation:
 
         Returns False when the scan halted (debug variant)."""
         self._not_halted()
+        due = self._schedule.at(time_ms)
         if self._record is (self._silenced is not None):
             self._fit_recording()
-        return self._scan_now(time_ms, self._schedule.at(time_ms), scheduled=False)
+        return self._scan_now(time_ms, due, scheduled=False)
 
     def _not_halted(self) -> None:
         if self.halted is not None:
