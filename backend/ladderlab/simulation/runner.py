@@ -276,8 +276,8 @@ class SimRunner:
 
     def _holding(self) -> bool:
         """Whether commands wait for the next scan: the simulation runs and its last scan recorded no network's
-        power flow (``_records_next``), so the frame a command publishes could not show it. That scan is at most
-        ``publish_s`` away (a frame falls due before it, or it would have recorded)."""
+        power flow (``_records_next``), so the frame a command publishes could not show it. The next scan is less
+        than ``publish_s`` away (else that one would have recorded), and records (commands wait)."""
         return self._running and self.sim.quiet and self.sim.halted is None
 
     def _records_next(self) -> bool:
