@@ -279,13 +279,7 @@ class History:
                 replay.view(self.viewed)  # whichever networks the live monitor recorded when the checkpoint was taken
                 self._replay_viewed = self.viewed
             assert self._replay_at is not None
-            for number in range(self._replay_at, scan + 1):
-                for line in self._inputs.get(number, ()):
-                    replay.submit(InputEvent.from_json(json.loads(line)))
-                if number in self._times:
-                    replay.scan_at(self._times[number])
-                else:
-                    replay.cycle(1)
+            self._replay_scans(self._replay_at, scan)
             self._replay_at = scan + 1
         return replay
 
@@ -295,22 +289,33 @@ class History:
         watchdog depends on the machine's speed, and the runner records every scan of a program that checks it),
         else the checkpoint after it is restored by ``seek`` (its networks unknown). The next seek restores a
         checkpoint again (the scan stays a barrier)."""
-        checkpoint = self._checkpoint_at(scan)
+        # From before the scan before it, which records too: the elements after the fault count as run and show the
+        # values it left (``Simulation.probes``), as when every scan records (unless that scan cannot be redone)
+        checkpoint = self._checkpoint_at(scan if scan - 1 in self._barriers else scan - 1)
         if checkpoint.scan > scan:
             return False
         replay = self._replay_sim()
         self._restore(checkpoint)
         replay.view(self.viewed)
         self._replay_viewed = self.viewed
-        for number in range(checkpoint.scan, scan + 1):
+        self._replay_scans(checkpoint.scan, scan, records_from=scan - 1)
+        self._replay_at = None
+        return [fault.text() for fault in replay.faults if fault.scan == scan] == self._quiet_errors[scan]
+
+    def _replay_scans(self, first: int, last: int, records_from: int | None = None) -> None:
+        """Run scans ``first`` to ``last`` again in the replay, each fed its recorded inputs. Only the last (those
+        from ``records_from`` on) records the viewed networks' power flow: it is the scan a seek shows
+        (``Simulation.record``)."""
+        replay = self._replay_sim()
+        for number in range(first, last + 1):
             for line in self._inputs.get(number, ()):
                 replay.submit(InputEvent.from_json(json.loads(line)))
+            replay.record(number >= (last if records_from is None else records_from))
             if number in self._times:
                 replay.scan_at(self._times[number])
             else:
                 replay.cycle(1)
-        self._replay_at = None
-        return [fault.text() for fault in replay.faults if fault.scan == scan] == self._quiet_errors[scan]
+        replay.record(True)
 
     def stepper(self, scan: int, debug: CompiledProgram) -> Simulation:
         """A new simulation of ``debug`` (the program's debug variant) at the start of ``scan``: the state the scan
