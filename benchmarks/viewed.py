@@ -5,10 +5,14 @@ the rounds): the fast variant (monitoring off: ``ladderlab run``, tests), the mo
 viewed (what a server simulation runs while a client shows an LD editor: ``Simulation.view``, docs/runtime.md
 "Viewed networks") and the monitor variant recording every network (what it ran before, on every scan). A third
 of the rungs conduct (timers, counters, adders running). Also the CPU time of reading the 20 viewed networks'
-element states, as a monitor frame does (every ``publish_s``, 20 ms by default).
+element states, as a monitor frame does (every ``publish_s``, 20 ms by default), and the monitor variant with 20
+viewed as a server's runner scans it: only the last scan of each batch of ``B`` between two frames records the
+viewed networks (``Simulation.record``; docs/runtime.md, "Scans no frame shows"). ``B`` is 2 for a 10 ms task at
+real time and 20 ms frames, 20 at ten times real time.
 
 On a checkout without ``Simulation.view`` (the base, to take turns with) the monitor variant records every
-network and the "20 viewed" column is left out: ``LADDERLAB_ROOT=/path/to/base`` runs this script on that checkout.
+network and the "20 viewed" column is left out (without ``Simulation.record``, the batched ones):
+``LADDERLAB_ROOT=/path/to/base`` runs this script on that checkout.
 Run ``.venv/bin/python benchmarks/viewed.py [sizes...]``.
 """
 
@@ -31,12 +35,24 @@ from ladderlab.ir.lower_project import lower_project  # noqa: E402
 
 VIEWED = 20  # networks an LD editor shows
 ROUNDS = 7
+BATCHES = (2, 10)  # scans between two frames, the last of them recorded
 
 
 def per_scan_us(sim: Simulation, scans: int) -> float:
     start = time.thread_time()
     sim.cycle(scans)
     return (time.thread_time() - start) / scans * 1e6
+
+
+def per_scan_batched_us(sim: Simulation, scans: int, batch: int) -> float:
+    """As a server's runner scans: each batch of ``batch`` scans records the viewed networks on its last only."""
+    start = time.thread_time()
+    for _ in range(scans // batch):
+        sim.record(False)
+        sim.cycle(batch - 1)
+        sim.record(True)
+        sim.cycle(1)
+    return (time.thread_time() - start) / (scans // batch * batch) * 1e6
 
 
 def measure(networks: int) -> None:
@@ -50,24 +66,36 @@ def measure(networks: int) -> None:
     every, viewed = Simulation(monitor), Simulation(monitor.own_code() if hasattr(monitor, "own_code") else monitor)
     first = networks // 2  # the middle of the program
     ids = [e for e in monitor.generated.context.probes_of("MAIN").elements if first <= _network(e) < first + VIEWED]
-    sims = {"off (fast)": fast, "every network": every}
+    # (label, simulation, batch: None for one call of every scan, label of the figure it is compared with)
+    runs: list[tuple[str, Simulation, int | None, str]] = [
+        ("off (fast)", fast, None, "off (fast)"),
+        ("every network", every, None, "off (fast)"),
+    ]
     if hasattr(viewed, "view"):
         viewed.view({"MAIN": ids})
-        sims["20 viewed"] = viewed
+        runs.append(("20 viewed", viewed, None, "off (fast)"))
+    if hasattr(viewed, "record"):  # the runner scans one call at a time: its "off" scans so too
+        for batch in BATCHES:
+            sim = Simulation(monitor.own_code())
+            sim.view({"MAIN": ids})
+            off = f"off, batches of {batch}"
+            runs += [(off, fast, batch, off), (f"20 viewed, 1 scan in {batch} recorded", sim, batch, off)]
     for n in range(0, networks, 3):
-        for sim in sims.values():
+        for sim in {id(sim): sim for _, sim, _, _ in runs}.values():
             sim.write(f"Main.A{n}", True)
-    scans = max(4, 40_000 // networks)
-    times: dict[str, list[float]] = {label: [] for label in sims}
+    scans = max(1, 40_000 // networks // 20) * 20  # (whole batches)
+    times: dict[str, list[float]] = {label: [] for label, *_ in runs}
     read: list[float] = []
     for _ in range(ROUNDS):
-        for label, sim in sims.items():
-            times[label].append(per_scan_us(sim, scans))
+        for label, sim, batch, _ in runs:
+            times[label].append(per_scan_us(sim, scans) if batch is None else per_scan_batched_us(sim, scans, batch))
         start = time.thread_time()
-        (viewed if "20 viewed" in sims else every).probes("MAIN", ids)
+        (viewed if hasattr(viewed, "view") else every).probes("MAIN", ids)
         read.append((time.thread_time() - start) * 1e6)
-    off = min(times["off (fast)"])
-    parts = [f"{label} {min(ts):.1f} us ({min(ts) / off:.2f}x)" for label, ts in times.items()]
+    parts = [
+        f"{label} {min(times[label]):.1f} us ({min(times[label]) / min(times[base]):.2f}x)"
+        for label, _, _, base in runs
+    ]
     print(
         f"{networks} networks, per scan (CPU, best of {ROUNDS} x {scans} scans): {', '.join(parts)}; "
         f"reading the 20 viewed networks {min(read):.0f} us; {load_average()}",

@@ -158,10 +158,16 @@ class Simulation:
         self.mocks = Mocks()
         #: (program, probe number) -> (container, key) of its variable (_read_some_deferred)
         self._deferred_pairs: dict[tuple[str, int], tuple[object, object]] = {}
-        #: (instance or function, elements or None) -> how a frame reads them (frames.py)
-        self._frame_plans: dict[tuple[str, tuple[str, ...] | None], FramePlan] = {}
+        #: (instance or function, elements or None, by network run?) -> how a frame reads them (frames.py)
+        self._frame_plans: dict[tuple[str, tuple[str, ...] | None, bool], FramePlan] = {}
         self._viewed: dict[str, Iterable[str] | None] | None = None  # ``view``'s argument; None: every network
         self._viewed_since: dict[tuple[str, int], int] = {}  # (instance, network) -> the stamp it was viewed from
+        self._record = True  # whether the next scans record the viewed networks (``record``)
+        #: while scans record no network: (instance, its own ``ll_v`` flags), each holding a list of False instead
+        self._silenced: list[tuple[object, list[bool], list[bool]]] | None = None
+        #: (instance, its own flags, its list of False) of the instances with a viewed network, until ``view``
+        self._mutes: list[tuple[object, list[bool], list[bool]]] | None = None
+        self._quiet_stamp = -1  # the stamp of the last scan that recorded no network (``quiet``)
         self._attach_debugger()
         self._initialise(warm=False)
 
@@ -188,6 +194,7 @@ class Simulation:
             compiled = self._variants.get(variant) or compile_program(self.compiled.program, variant)
         if compiled.variant != variant or compiled.declarations != self.compiled.declarations:
             raise ValueError(f"that is not the {variant} variant of this simulation's program")
+        self._unsilence()  # (the debug code records every network: its flags are the real ones again)
         if self.variant == "monitor":  # the debug code stores every probe: start from complete lists
             for obj, pou in self._instances_by_path().values():
                 table = self.compiled.generated.context.probes_of(pou)
@@ -224,6 +231,8 @@ class Simulation:
     def _initialise(self, warm: bool, implicit: bool = True) -> None:
         """The process image cleared (the inputs stay as the world set them), the globals - program instances first
         (codegen/tasks.py) - then the VAR_CONFIG initial values, then (``implicit``) every instance's FB_init."""
+        self._unsilence()  # (a restart may make new instances: the next quiet scans silence those)
+        self._mutes = None
         self._image.clear()
         self._ns["ll_init_globals"](warm)
         self._ns["ll_config_init"](warm)
@@ -263,6 +272,10 @@ class Simulation:
 
     def next_scan_time(self) -> float:
         return self._schedule.next_time()
+
+    def following_scan_time(self) -> float:
+        """When the scan after the next one is due (on the schedule: a ``scan_at`` may come between)."""
+        return self._schedule.following_time()
 
     @property
     def fault(self) -> Fault | None:
@@ -304,6 +317,8 @@ class Simulation:
     def cycle(self, n: int = 1) -> int:
         """Run ``n`` scans of the task configuration; returns how many completed (fewer when one halts)."""
         self._not_halted()
+        if self._record is (self._silenced is not None) and n > 0:
+            self._fit_recording()
         if self._lone is not None:
             return self._cycle_lone(n, self._lone)
         for done in range(n):
@@ -316,6 +331,8 @@ class Simulation:
         """Run every scan due within the next ``ms`` of virtual time; returns how many completed."""
         self._not_halted()
         end, done = self.time_ms + ms, 0
+        if self._record is (self._silenced is not None) and self._schedule.next_time() <= end:
+            self._fit_recording()  # (only before a scan: silenced flags say the last scan recorded nothing)
         while self._schedule.next_time() <= end:
             now, due = self._schedule.advance()
             if not self._scan_now(now, due, scheduled=True):
@@ -328,7 +345,10 @@ class Simulation:
 
         Returns False when the scan halted (debug variant)."""
         self._not_halted()
-        return self._scan_now(time_ms, self._schedule.at(time_ms), scheduled=False)
+        due = self._schedule.at(time_ms)
+        if self._record is (self._silenced is not None):
+            self._fit_recording()
+        return self._scan_now(time_ms, due, scheduled=False)
 
     def _not_halted(self) -> None:
         if self.halted is not None:
@@ -339,6 +359,7 @@ class Simulation:
         task, process image or debugger): the steps of ``_scan_now`` inline, each skipped when it has nothing to do
         (inputs, forces, injected faults, the watchdog of a program without loops, an unsampled scan's clock)."""
         ns, schedule, stats, period = self._ns, self._schedule, self.stats, cast(float, task.interval_ms)
+        silenced = self._silenced is not None
         self._scheduled = True
         for done in range(n):
             if self._pending:
@@ -353,6 +374,8 @@ class Simulation:
             ns["ll_now"] = now
             self._stamp += 1
             ns["ll_scan"] = self._stamp
+            if silenced:
+                self._quiet_stamp = self._stamp
             if not task.stopped:
                 sampled = not self.scan_count % SAMPLE_EVERY
                 start = self._clock() if sampled else 0.0
@@ -389,6 +412,8 @@ class Simulation:
         self._ns["ll_now"] = now
         self._stamp += 1
         self._ns["ll_scan"] = self._stamp
+        if self._silenced is not None:
+            self._quiet_stamp = self._stamp
         if self.debugger is None:
             outer = self._watchdog.deadline, self._watchdog.limit_s  # a scan run from a test's body (call)
             sampled = not self.scan_count % SAMPLE_EVERY
@@ -467,6 +492,11 @@ class Simulation:
     def _fault(self, task: Task, error: Exception, now: float) -> None:
         task.stopped = True
         self._record_fault(error, task.name, now)
+        if self._quiet_stamp == self._stamp - 1:
+            # The elements after the fault in the failing network count as run (``probes``) and show the values an
+            # earlier scan left: after a quiet scan not the previous scan's, as recording every scan shows. So this
+            # scan counts as quiet too: its networks are unknown (a scan history recomputes them: History.seek).
+            self._quiet_stamp = self._stamp
 
     def _record_fault(self, error: Exception, task: str, now: float) -> None:
         """``error`` as a located fault of ``task`` (a task's name, or what ran outside the tasks) at ``now``."""
@@ -676,7 +706,7 @@ class Simulation:
                 raise UnknownPath(f"no POU instance {instance!r}{did_you_mean(instance, known)}")
             obj, pou_key = found
             table = self.compiled.generated.context.probes_of(pou_key)
-            plan = self._frame_plan(key, table, wanted, self.variant == "monitor")
+            plan = self._frame_plan(key, table, wanted, self.variant == "monitor" or self.quiet)
             recorded = {network: self._recorded(key, obj, network) for network in plan.networks}
             if elements is None:
                 self._read_deferred(obj, table)
@@ -689,15 +719,18 @@ class Simulation:
     def _frame_plan(self, key: str, table: ProbeTable, elements: tuple[str, ...] | None, networks: bool) -> FramePlan:
         """``frame_plan`` of these elements, kept for the next frame (a client asks for the same ones each time)."""
         plans = self._frame_plans
-        plan = plans.get((key, elements))
+        plan = plans.get((key, elements, networks))
         if plan is None:
             if len(plans) >= _FRAME_PLANS:
                 plans.clear()
-            plan = plans[(key, elements)] = frame_plan(table, elements, networks)
+            plan = plans[(key, elements, networks)] = frame_plan(table, elements, networks)
         return plan
 
     def _recorded(self, instance: str, obj: object, network: int) -> bool:
-        """Whether the last scan recorded the probes of the instance's ``network``: viewed since before it began."""
+        """Whether the last scan recorded the probes of the instance's ``network``: viewed since before it began, and
+        not a scan that recorded no network (``record``)."""
+        if self._quiet_stamp == self._stamp:
+            return False
         return obj.ll_v[network] and self._viewed_since.get((instance, network), -1) < self._stamp  # type: ignore[attr-defined]  # generated POU classes and their namespace are untyped
 
     def view(self, viewed: dict[str, Iterable[str] | None] | None) -> None:
@@ -708,6 +741,8 @@ class Simulation:
         ``unknown`` until then). The debug variant records every probe. Which networks are viewed is part of the
         state (``state``), so a restored scan knows which networks it recorded."""
         self._viewed = None if viewed is None else {key.strip().upper(): ids for key, ids in viewed.items()}
+        self._unsilence()  # (the flags set are the real ones; the next quiet scan silences them again)
+        self._mutes = None
         for key, (obj, pou) in self._instances_by_path().items():
             table = self._context_probes(pou)
             if table is None or not table.networks:
@@ -725,6 +760,47 @@ class Simulation:
                     self._viewed_since[(key, network)] = self._stamp
                 flags[network] = on
             self.compiled.compile_viewed(self._ns, pou.upper(), flags)
+
+    def record(self, on: bool) -> None:
+        """Whether the next scans record the power flow of the viewed networks (monitor variant; docs/runtime.md,
+        "Scans no frame shows"). Off, each scan runs every network as if nobody viewed it (the twins without
+        probes), and until a recording scan ran, ``probes`` lists the elements of every network as ``unknown``,
+        never a stale value (``quiet``). A server's runner records only the scans a frame may show
+        (simulation/runner.py). FUNCTIONs and bodies other than networks record in every scan, as always."""
+        self._record = on
+
+    @property
+    def quiet(self) -> bool:
+        """Whether the last scan recorded no network's power flow (``record``)."""
+        return self._quiet_stamp == self._stamp
+
+    def _fit_recording(self) -> None:
+        """Before scans: silence the viewed networks (``record(False)``, monitor variant) or give them their flags
+        back. Silenced, each instance's ``ll_v`` is a list of False of its own (the generated code reads it at
+        every call), so its flags stay as ``view`` set them; a state captured meanwhile says no network recorded."""
+        if self._record or self.variant != "monitor":
+            self._unsilence()
+        elif self._silenced is None:
+            self._silence()
+
+    def _silence(self) -> None:
+        mutes = self._mutes
+        if mutes is None:
+            mutes = self._mutes = []
+            for obj, _pou in self._instances_by_path().values():
+                flags = getattr(obj, "ll_v", None)
+                if flags and True in flags:
+                    mutes.append((obj, flags, [False] * len(flags)))  # (nothing writes into it: unsilenced first)
+        for obj, _flags, off in mutes:
+            obj.ll_v = off  # type: ignore[attr-defined]  # generated POU classes and their namespace are untyped
+        self._silenced = mutes
+
+    def _unsilence(self) -> None:
+        """The instances' own flags back (``_fit_recording``); ``quiet`` still says what the last scan recorded."""
+        if self._silenced is not None:
+            for obj, flags, _off in self._silenced:
+                obj.ll_v = flags  # type: ignore[attr-defined]  # generated POU classes and their namespace are untyped
+            self._silenced = None
 
     def _context_probes(self, pou: str) -> ProbeTable | None:
         return self.compiled.generated.context.probe_tables.get(pou.upper())
@@ -1015,8 +1091,15 @@ class Simulation:
     # ------------------------------------------------------------------ state (engine/state.py)
 
     def state(self) -> SimState:
-        """The whole state between scans as plain data (not while halted)."""
+        """The whole state between scans as plain data (not while halted). After a scan that recorded no network
+        (``quiet``), its flags say so: a simulation it is restored into shows those networks as unknown."""
         self._not_halted()
+        if self.quiet and self._silenced is None:
+            self._silence()
+            try:
+                return self.state()
+            finally:
+                self._unsilence()
         pages = sorted({global_owner(p.page) for p in self._context.globals.places.values()})
         return SimState(
             self.compiled.declarations_digest,
@@ -1048,6 +1131,8 @@ class Simulation:
         if state.declarations != self.compiled.declarations_digest:
             raise ValueError("that state was captured from another program")
         data = [*state.instances.values(), *state.globals.values()]
+        self._unsilence()  # (the state's flags go into the instances' own lists)
+        self._mutes = None
         # a state that holds every value overwrites all an initialisation would set (about half a restore's time)
         self._reset(cold=True, initialise=any(holds_references(item) for item in data), implicit=False)
         for name, (pou, links) in state.attached.items():
@@ -1067,6 +1152,7 @@ class Simulation:
         self.scan_count = state.scan_count
         self._stamp = state.stamp
         self._ns["ll_scan"] = state.stamp
+        self._quiet_stamp = -1  # (a state captured after a quiet scan holds its silenced flags: ``_fit_recording``)
         self._forces.clear()
         for path, value in state.forces.items():
             location = self._resolver.resolve(path)

@@ -166,6 +166,16 @@ class Schedule:
         due = min([task.next_due for task, _ in self._periods]) if self._periods else math.inf
         return self._idle_due if self._idle and self._idle_due < due else due
 
+    def following_time(self) -> float:
+        """When the scan after the next one is due: ``next_time`` once ``advance`` has run (nothing changes)."""
+        now = self.next_time()
+        dues = [task.next_due + period if task.next_due == now else task.next_due for task, period in self._periods]
+        due = min(dues, default=math.inf)
+        if not self._idle:
+            return due
+        idle = self._idle_due + IDLE_MS if self._idle_due == now else self._idle_due
+        return min(idle, due)
+
     def advance(self) -> tuple[float, list[Task]]:
         """Move the clock to the next due time; the tasks due then: the plants (every scan) first, then the
         cyclic tasks due, in priority order."""
@@ -277,6 +287,14 @@ class Pacer:
             self._anchor = (self.clock(), self.sim.time_ms)
         wall, virtual = self._anchor
         return virtual + (self.clock() - wall) * 1000.0 * self.speed
+
+    def wall_time(self, virtual_ms: float) -> float:
+        """The wall clock time at which ``poll`` runs a scan due at ``virtual_ms`` (now, when it is due already)."""
+        now = self.clock()
+        if self._anchor is None:
+            return now
+        wall, virtual = self._anchor
+        return max(now, wall + (virtual_ms - virtual) / 1000.0 / self.speed)
 
     def poll(self) -> float:
         if self.sim.halted:

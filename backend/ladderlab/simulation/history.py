@@ -87,6 +87,9 @@ class History:
         self._times: dict[int, float] = {}  # scan -> its virtual time, for scans the schedule did not choose
         self._barriers: set[int] = set()  # scans a replay cannot redo: viewed from the checkpoint after them
         self._errors: set[int] = set()  # scans that ended with a runtime error or a watchdog trip
+        #: scans that ended with a fault and recorded no network's power flow (``Simulation.quiet``), with their
+        #: faults' texts: ``seek`` recomputes them from the checkpoint before, when they fault alike again
+        self._quiet_errors: dict[int, list[str]] = {}
         self._marks: dict[int, set[str]] = {}  # scan -> what else happened in it: a breakpoint hit, a trace trigger
         self.marked = 0  # grows with every newly marked scan (an input, an error): the timeline refetches marks
         self.log_size = 0  # bytes of _inputs and _times
@@ -171,6 +174,8 @@ class History:
                 self._barriers.add(scan)
                 self._errors.add(scan)
                 self.marked += 1
+                if self.live.quiet:
+                    self._quiet_errors[scan] = [fault.text() for fault in self.live.faults if fault.scan == scan]
         if scan in self._barriers or self._since >= self.interval or self._log_since >= self.log_bytes:
             self._checkpoint()
 
@@ -226,6 +231,7 @@ class History:
                 self.log_size -= 16
             self._barriers = {scan for scan in self._barriers if scan >= first}
             self._errors = {scan for scan in self._errors if scan >= first}
+            self._quiet_errors = {scan: texts for scan, texts in self._quiet_errors.items() if scan >= first}
             self._marks = {scan: kinds for scan, kinds in self._marks.items() if scan >= first}
             if self._replay_at is not None and self._replay_at < first:
                 self._replay_at = None
@@ -261,6 +267,8 @@ class History:
                 raise HistoryUnavailable(f"scan {scan} has not run yet (the last scan is {self.last})")
             raise HistoryUnavailable(f"scan {scan} is no longer in the history: it starts at scan {self.first}")
         replay = self._replay_sim()
+        if scan in self._quiet_errors and self._rerun(scan):
+            return replay
         if scan in self._barriers or scan < self.checkpoints[0].scan:  # the checkpoint taken after it holds it
             self._restore(self._checkpoint_at(scan + 1))
         else:
@@ -271,15 +279,43 @@ class History:
                 replay.view(self.viewed)  # whichever networks the live monitor recorded when the checkpoint was taken
                 self._replay_viewed = self.viewed
             assert self._replay_at is not None
-            for number in range(self._replay_at, scan + 1):
-                for line in self._inputs.get(number, ()):
-                    replay.submit(InputEvent.from_json(json.loads(line)))
-                if number in self._times:
-                    replay.scan_at(self._times[number])
-                else:
-                    replay.cycle(1)
+            self._replay_scans(self._replay_at, scan)
             self._replay_at = scan + 1
         return replay
+
+    def _rerun(self, scan: int) -> bool:
+        """Run a faulted scan that recorded no network again from the checkpoint before it, recording the viewed
+        networks, so its power flow is known: True when it faulted alike (a runtime error always does: only the
+        watchdog depends on the machine's speed, and the runner records every scan of a program that checks it),
+        else the checkpoint after it is restored by ``seek`` (its networks unknown). The next seek restores a
+        checkpoint again (the scan stays a barrier)."""
+        # From before the scan before it, which records too: the elements after the fault count as run and show the
+        # values it left (``Simulation.probes``), as when every scan records (unless that scan cannot be redone)
+        checkpoint = self._checkpoint_at(scan if scan - 1 in self._barriers else scan - 1)
+        if checkpoint.scan > scan:
+            return False
+        replay = self._replay_sim()
+        self._restore(checkpoint)
+        replay.view(self.viewed)
+        self._replay_viewed = self.viewed
+        self._replay_scans(checkpoint.scan, scan, records_from=scan - 1)
+        self._replay_at = None
+        return [fault.text() for fault in replay.faults if fault.scan == scan] == self._quiet_errors[scan]
+
+    def _replay_scans(self, first: int, last: int, records_from: int | None = None) -> None:
+        """Run scans ``first`` to ``last`` again in the replay, each fed its recorded inputs. Only the last (those
+        from ``records_from`` on) records the viewed networks' power flow: it is the scan a seek shows
+        (``Simulation.record``)."""
+        replay = self._replay_sim()
+        for number in range(first, last + 1):
+            for line in self._inputs.get(number, ()):
+                replay.submit(InputEvent.from_json(json.loads(line)))
+            replay.record(number >= (last if records_from is None else records_from))
+            if number in self._times:
+                replay.scan_at(self._times[number])
+            else:
+                replay.cycle(1)
+        replay.record(True)
 
     def stepper(self, scan: int, debug: CompiledProgram) -> Simulation:
         """A new simulation of ``debug`` (the program's debug variant) at the start of ``scan``: the state the scan

@@ -251,19 +251,55 @@ class SimRunner:
         self._settle(publish=True)
         while True:
             with self._cv:
-                if not self._commands:
+                if not self._commands or self._holding():
                     self._cv.wait(self._delay if self._running else None)
+            self.turn()
+
+    def turn(self) -> None:
+        """One turn of ``serve``'s loop after its wait: the commands that came (unless they wait for the next
+        scan: ``_holding``), then the scans that are due."""
+        with self._cv:
+            if self._holding():  # the scan that runs next is recorded, and then the commands run
+                commands: deque[tuple[str, dict[str, Any], Reply]] = deque()
+            else:
                 commands, self._commands = self._commands, deque()
-            for op, args, reply in commands:
-                self._execute(op, args, reply)
-            if self._running and self._pacer is not None:  # halted: the pacer idles and re-anchors after
-                try:
-                    self._delay = self._pacer.poll()
-                except Exception as error:
-                    log.exception("simulation thread failed")
-                    self._set_running(False)
-                    self._log("system", "error", f"internal error, simulation stopped: {error!r}")
-                self._settle()
+        for op, args, reply in commands:
+            self._execute(op, args, reply)
+        if self._running and self._pacer is not None:  # halted: the pacer idles and re-anchors after
+            try:
+                self._delay = self._pacer.poll()
+            except Exception as error:
+                log.exception("simulation thread failed")
+                self._set_running(False)
+                self._log("system", "error", f"internal error, simulation stopped: {error!r}")
+            self._settle()
+
+    def _holding(self) -> bool:
+        """Whether commands wait for the next scan: the simulation runs and its last scan recorded no network's
+        power flow (``_records_next``), so the frame a command publishes could not show it. The next scan is less
+        than ``publish_s`` away (else that one would have recorded), and records (commands wait)."""
+        return self._running and self.sim.quiet and self.sim.halted is None
+
+    def _records_next(self) -> bool:
+        """Whether the scan the pacer runs next records the power flow of the viewed networks: only a scan a frame
+        may show does (docs/runtime.md, "Scans no frame shows"). A frame goes out after a scan when one is due
+        (``publish_s`` after the last: it is due before the scan, or the scan records nothing and the next one,
+        less than ``publish_s`` away, shows it), and after a command (commands waiting record the next scan, and
+        while the last one recorded nothing they wait for the next: ``_holding``). So a scan records when a frame
+        is due, when commands wait, or when the scan after it is ``publish_s`` away or more. Every scan records
+        while a run until is set (its condition stops the run after any scan), of a program that checks the
+        watchdog (a trip's moment depends on the machine's speed: that scan could not be recomputed), or without
+        a history (which recomputes the power flow of a scan that ended with a runtime error: ``History.seek``)."""
+        pacer, sim = self._pacer, self.sim
+        if pacer is None or self.history is None or self._commands or sim.variant != "monitor":
+            return True
+        if self._until is not None or self._until_ms is not None or sim.compiled.watched:
+            return True
+        now = self.clock()
+        return (
+            now - self._last_publish >= self.publish_s
+            or pacer.wall_time(sim.following_scan_time()) - now >= self.publish_s
+        )
 
     def _execute(self, op: str, args: dict[str, Any], reply: Reply) -> None:
         handler = self._OPS.get(op)
@@ -354,7 +390,7 @@ class SimRunner:
         # A new state (above all a halt) is followed at once by the values of that moment, so a client
         # shows the values at the halt point, not those of the last periodic frame.
         now = self.clock()
-        if publish or changed or now - self._last_publish >= self.publish_s:
+        if publish or changed or (now - self._last_publish >= self.publish_s and not sim.quiet):
             self._publish(now)
 
     def _call_stack(self, read: bool) -> list[CallFrame]:
@@ -504,7 +540,10 @@ class SimRunner:
         if running and not self._running:
             self._run_since = now
             self._pacer = Pacer(
-                _Scans(self), speed=self.speed, clock=self.clock, interrupted=lambda: bool(self._commands)
+                _Scans(self),
+                speed=self.speed,
+                clock=self.clock,
+                interrupted=lambda: bool(self._commands) and not self.sim.quiet,  # (``_holding``)
             )
             self._delay = 0.0
         elif not running and self._running:
@@ -1214,8 +1253,12 @@ class _Scans:
         return self.sim.next_scan_time()
 
     def cycle(self, n: int = 1) -> int:
-        done = self.sim.cycle(n)
         runner = self.runner
+        self.sim.record(runner._records_next())
+        try:
+            done = self.sim.cycle(n)
+        finally:
+            self.sim.record(True)  # (single cycles, steps, replays record)
         reached = runner._reached() if done and (runner._until or runner._until_ms is not None) else None
         if reached is not None:
             runner._log("state", "info", f"run until: {reached} after scan {self.sim.scan_count - 1}: stopped")
