@@ -333,7 +333,9 @@ class DisplayType(Model):
         description="The IEC elementary type (TIME, DATE, WORD...; a subrange's base type), "
         "or the name of the enumeration, structure or FB type."
     )
-    names: dict[str, str] | None = Field(default=None, description="An enumeration's value names by value.")
+    names: dict[str, str] | None = Field(
+        default=None, description="An enumeration's value names by value, spelled as declared (writes take any case)."
+    )
 
 
 class StackVariable(Model):

@@ -700,7 +700,7 @@ export interface DisplayType {
    */
   name: string;
   /**
-   * An enumeration's value names by value.
+   * An enumeration's value names by value, spelled as declared (writes take any case).
    */
   names?: {
     [k: string]: string;
