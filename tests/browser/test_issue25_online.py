@@ -120,3 +120,20 @@ def test_a_part_is_traced_and_triggers_the_trace(page, server: str) -> None:
     assert [row[2] for row in table] == ["FALSE", "TRUE", "FALSE", "TRUE"]
     first = int(table[0][3])
     assert first % 4 == 2 and [int(row[3]) for row in table] == [first, first + 1, first + 2, first + 3]
+
+
+def test_an_enumeration_is_traced_by_its_values_names_as_declared(page, server: str) -> None:
+    """Main sets m := Mode#Run every scan: the trace's table names the value Run (declared), not RUN or 5."""
+    store_project(server, PROJECT)
+    page.goto(server)
+    open_pou(page, "values25", "Main")
+    go_online(page)
+    page.get_by_role("tab", name="Trace").click()
+    page.get_by_label("Variable to trace").fill("Main.m")
+    page.keyboard.press("Enter")
+    page.get_by_label("Samples to keep").fill("2")
+    page.get_by_role("button", name="Start trace").click()
+    page.get_by_role("status", name="Trace state").filter(has_text="Done · 2 samples").wait_for()
+    page.get_by_label("Table").check()
+    rows = page.get_by_role("table", name="Trace samples").locator("tbody tr")
+    assert rows.evaluate_all("rows => rows.map(r => r.children[2].textContent)") == ["Run", "Run"]

@@ -462,6 +462,11 @@ class TraceData(Model):
     values: dict[str, list[Value]]
     triggered: TraceTriggered | None = None
     lost: int = 0
+    types: dict[str, DisplayType] = Field(
+        default_factory=dict,
+        description="In a trace's first chunk: how to show each path's values (an enumeration's names), as the "
+        "first values message after a subscribe says; empty in the others.",
+    )
 
 
 #: What an online log entry is about, so the log can be filtered (seed ON-15).

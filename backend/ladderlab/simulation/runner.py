@@ -1100,7 +1100,8 @@ class SimRunner:
             plan = plan_trace(self._location, paths, TraceTrigger(**trigger) if trigger else None)
         except TraceRefused as error:
             raise CommandError("bad_path", str(error)) from None
-        self.traces.start(owner, trace_id, plan, samples, self.sim)
+        types = {location.path: display_type(location.type).model_dump() for location in plan.locations}
+        self.traces.start(owner, trace_id, plan, samples, self.sim, types)
 
     def stop_trace(self, owner: object) -> None:
         if not self.traces.stop(owner):
