@@ -1,8 +1,8 @@
 """Enumeration values online in their declared spelling (brief polish25 item 1), over the real websocket: CODESYS
 shows ``Green`` for ``TYPE Color : (Red, Green)``, not the canonical ``GREEN``, so the types of a subscription (which
 the watch list, inline values, panels and history show values by), a trace's first chunk (the trace's table and
-legend) and a halted call's own variables name each value as declared; a write takes any case (``'GREEN'``,
-``'color#blueish'``) as before. Expected names come from the declaration text."""
+legend), a force's log entry and a halted call's own variables name each value as declared; a write takes any
+case (``'GREEN'``, ``'color#blueish'``) as before. Expected names come from the declaration text."""
 
 from __future__ import annotations
 
@@ -12,7 +12,7 @@ from ladderlab.simulation.registry import SimulationRegistry
 from ladderlab.st.project_text import source_to_project
 from ladderlab.storage import Workspace
 
-from .test_simulations_support import of_type, recv, recv_until, registry, subscribe
+from .test_simulations_support import log_of, of_type, recv, recv_until, registry, subscribe
 from .test_trace import collect, cycles, done
 
 __all__ = ["registry"]  # fixture used below
@@ -52,6 +52,9 @@ def test_values_of_an_enumeration_are_named_as_declared_and_written_in_any_case(
             message, _ = recv_until(ws, of_type("values", scan=scan))
             shown = {"MAIN.C": value, "MAIN.D": result}
             assert {**shown, **message["changed"]} == shown, written
+        ws.send_json({"type": "force", "path": "Main.c", "value": "blueish"})
+        entry, _ = recv_until(ws, log_of("force"))
+        assert entry["message"] == "forced MAIN.C := blueIsh"  # the online log names the value as declared too
         ws.send_json({"type": "trace_start", "id": 3, "paths": ["Main.d", "Main.c"], "samples": 2})
         first, _ = recv_until(ws, of_type("trace_data", id=3))  # its first chunk says how to show the values
         assert first["types"] == {"MAIN.D": AS_DECLARED, "MAIN.C": AS_DECLARED}

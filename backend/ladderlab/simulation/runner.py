@@ -615,7 +615,8 @@ class SimRunner:
     def force(self, path: str, value: object) -> None:
         location = self._location(path)
         _coerced(self.sim.force, path, value)
-        self._log("force", "info", f"forced {location.path} := {value_text(self.sim.read(path))}")
+        forced, named = self.sim.read(path), display_type(location.type).names or {}
+        self._log("force", "info", f"forced {location.path} := {named.get(str(forced)) or value_text(forced)}")
 
     def unforce(self, path: str) -> None:
         location = self._location(path)
