@@ -125,7 +125,7 @@ class TypeLowering:
                 )
             return array
         if isinstance(ty, t.EnumType):  # the values as declared: online views show them so (CODESYS does)
-            return Enum(ty.name.upper(), tuple(written for written in ty.values.values()), ty.base)
+            return Enum(ty.name.upper(), tuple(ty.values.values()), ty.base)
         if isinstance(ty, t.StructType):
             return self._struct(ty, spec)
         if isinstance(ty, t.FbType):
