@@ -1,5 +1,5 @@
-"""Issue 25's values online in Chromium: the ST editor shows an LTIME, an enumeration value, a part (``w.%X3``) and a
-pointer's own value (the ADR() it holds: ON-11) inline; an LD box writes a part (a MOVE's OUT into ``w.%B0``) and
+"""Issue 25's values online in Chromium: the ST editor shows an LTIME, an enumeration value (as declared, the
+watch list too), a part (``w.%X3``) and a pointer's own value (the ADR() it holds: ON-11) inline; an LD box writes a part (a MOVE's OUT into ``w.%B0``) and
 a contact on ``w.%X3`` lights up, its badge showing the bit; a part is traced and triggers the trace. Expected values
 follow from the program text (IEC 61131-3 ed. 3 6.5.6 numbers parts from the least significant bit; 16#08 is
 bit 3)."""
@@ -12,7 +12,7 @@ import pytest
 from playwright.sync_api import expect
 
 from .conftest import ARTIFACTS
-from .steps import go_online, open_pou, store_project
+from .steps import go_online, open_pou, store_project, watch
 
 pytestmark = pytest.mark.browser
 
@@ -71,8 +71,10 @@ def test_ltime_an_enumeration_a_part_and_a_pointer_show_inline_in_st(page, serve
     open_pou(page, "values25", "Main")
     go_online(page)
     values = page.get_by_role("textbox", name="Main body").locator(".cm-st-value")
-    # w.%X3, lt, m (the enumeration's value by name, as the monitor names it), p, a[2] (the element p points to)
-    expect(values).to_have_text(["TRUE", "LTIME#1ms500us", "RUN", "ADR(a[2])", "20"])
+    # w.%X3, lt, m (the enumeration's value by name, spelled as declared: Run, as CODESYS shows it; brief polish25
+    # item 1), p, a[2] (the element p points to)
+    expect(values).to_have_text(["TRUE", "LTIME#1ms500us", "Run", "ADR(a[2])", "20"])
+    expect(watch(page, "Main.m")).to_have_text("Run")  # the watch list names it alike
     page.screenshot(path=str(ARTIFACTS / "online-issue25-st.png"))
 
 
@@ -118,3 +120,20 @@ def test_a_part_is_traced_and_triggers_the_trace(page, server: str) -> None:
     assert [row[2] for row in table] == ["FALSE", "TRUE", "FALSE", "TRUE"]
     first = int(table[0][3])
     assert first % 4 == 2 and [int(row[3]) for row in table] == [first, first + 1, first + 2, first + 3]
+
+
+def test_an_enumeration_is_traced_by_its_values_names_as_declared(page, server: str) -> None:
+    """Main sets m := Mode#Run every scan: the trace's table names the value Run (declared), not RUN or 5."""
+    store_project(server, PROJECT)
+    page.goto(server)
+    open_pou(page, "values25", "Main")
+    go_online(page)
+    page.get_by_role("tab", name="Trace").click()
+    page.get_by_label("Variable to trace").fill("Main.m")
+    page.keyboard.press("Enter")
+    page.get_by_label("Samples to keep").fill("2")
+    page.get_by_role("button", name="Start trace").click()
+    page.get_by_role("status", name="Trace state").filter(has_text="Done · 2 samples").wait_for()
+    page.get_by_label("Table").check()
+    rows = page.get_by_role("table", name="Trace samples").locator("tbody tr")
+    assert rows.evaluate_all("rows => rows.map(r => r.children[2].textContent)") == ["Run", "Run"]

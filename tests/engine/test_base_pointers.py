@@ -93,8 +93,8 @@ ATTEMPT = SHAPES + (
     "n := n + 1;\n"
     "IF n MOD 2 = 1 THEN seen := ADR(sq); ELSE seen := ADR(cu); END_IF;\n"
     "asSquare ?= seen; asCube ?= seen; hits := 0;\n"
-    "IF asSquare <> 0 THEN hits := hits + 1; side := asSquare^.side; END_IF;\n"
-    "IF asCube <> 0 THEN hits := hits + 10; END_IF;\n"
+    "IF asSquare <> NULL THEN hits := hits + 1; side := asSquare^.side; END_IF;\n"
+    "IF asCube <> NULL THEN hits := hits + 10; END_IF;\n"
     "END_PROGRAM\n"
 )
 
@@ -120,7 +120,7 @@ def test_an_assignment_attempt_from_an_interface_variable_into_an_fb_pointer():
         "PROGRAM Main\nVAR s : Sq := (side := 4); c : Circle; i : IShape; p : POINTER TO Sq; pi : POINTER TO IShape;\n"
         "  n, a, b : INT;\nEND_VAR\n"
         "n := n + 1;\nIF n MOD 2 = 1 THEN i := s; ELSE i := c; END_IF;\n"
-        "p ?= i;\nIF p <> 0 THEN a := p^.Area() + p^.side; ELSE a := -1; END_IF;\n"
+        "p ?= i;\nIF p <> NULL THEN a := p^.Area() + p^.side; ELSE a := -1; END_IF;\n"
         "pi := ADR(i); b := pi^.Area();\nEND_PROGRAM\n"
     )
     sim = build(text).simulation()

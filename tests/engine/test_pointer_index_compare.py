@@ -46,10 +46,12 @@ def test_p_of_i_is_the_element_i_on_or_a_fault(start, index):
 
 
 def test_pointer_comparisons_with_each_other_null_and_zero():
+    """``q = 0`` is CODESYS's test for NULL: CODESYS typing (IEC typing refuses it: test_pointer_zero.py)."""
     sim = simulation(
         ARRAY + " same, other, nowhere, somewhere, zero_first : BOOL; n : INT;",
         "IF n > 0 THEN q := ADR(a[n]); END_IF;\np := ADR(a[1]);\nsame := p = q;\nother := p <> q;\n"
         "nowhere := q = 0;\nsomewhere := q <> NULL;\nzero_first := 0 = q;\nn := n + 1;",
+        typing="codesys",
     )
     for scan, (same, null) in enumerate(((False, True), (True, False), (False, False)), start=1):
         sim.cycle(1)  # q: NULL in scan 1, then ADR(a[1]), ADR(a[2])

@@ -58,3 +58,21 @@ def test_codesys_typing_takes_no_other_integer_for_an_address():
     text = "PROGRAM Main\nVAR p : POINTER TO INT; END_VAR\np := 1;\nEND_PROGRAM\n"
     found, _ = _build(text, "codesys")
     assert found == ["Main/body:3:6, POU Main: error ST-TYPE-MISMATCH: cannot assign ANY_INT literal to REF_TO INT"]
+
+
+def test_iec_typing_refuses_a_pointer_compared_with_0_where_it_stands():
+    """IEC ed. 3 compares a reference with NULL and other references only: ``p = 0`` / ``0 <> r`` are the located
+    ST-TYPE-MISMATCH of mixed operands (CODESYS typing takes them: the first test); a REFERENCE TO compares its
+    target's value, so ``q <> 0`` stays an INT comparison."""
+    text = (
+        "PROGRAM Main\nVAR x : INT; p : POINTER TO INT; r : REF_TO INT; q : REFERENCE TO INT; a : BOOL; END_VAR\n"
+        "q REF= x;\na := p = 0;\na := 0 <> r;\na := q <> 0 AND p = NULL AND r <> NULL;\nEND_PROGRAM\n"
+    )
+    found, _ = _build(text, "iec")
+    hint = "under IEC typing a reference to no variable is NULL (CODESYS typing also takes 0)"
+    assert found == [
+        f"Main/body:4:6, POU Main: error ST-TYPE-MISMATCH: '=' needs operands of the same type: REF_TO INT and 0: {hint}",
+        f"Main/body:5:6, POU Main: error ST-TYPE-MISMATCH: '<>' needs operands of the same type: 0 and REF_TO INT: {hint}",
+    ]
+    found, _ = _build(text, "codesys")
+    assert found == []

@@ -14,14 +14,14 @@ from ladderlab.st.project_text import source_to_project
 TYPES = "TYPE S : STRUCT f : INT; g : ARRAY [1..3] OF INT; END_STRUCT; END_TYPE\n"
 
 
-def build(text: str):
+def build(text: str, typing: str = "iec"):
     project, diagnostics = source_to_project(text, "refs")
     assert project is not None and [d.format() for d in diagnostics if d.severity == "error"] == []
-    return build_project(project)
+    return build_project(project.model_copy(update={"typing": typing}))
 
 
-def simulation(declarations: str, body: str):
-    result = build(f"{TYPES}PROGRAM Main\nVAR\n{declarations}\nEND_VAR\n{body}\nEND_PROGRAM\n")
+def simulation(declarations: str, body: str, typing: str = "iec"):
+    result = build(f"{TYPES}PROGRAM Main\nVAR\n{declarations}\nEND_VAR\n{body}\nEND_PROGRAM\n", typing)
     assert [d.format() for d in result.diagnostics if d.severity == "error"] == []
     return result.simulation()
 

@@ -40,7 +40,7 @@ def test_ref_to_and_two_structs_pointing_at_each_other():
     body = """o.id := 7; o.first := REF(i1); i1.w := 1.5; i2.w := 2.25; i1.next := REF(i2);
 i1.owner := REF(o); i2.owner := REF(o); total := 0.0; ids := 0;
 r := o.first;
-WHILE r <> 0 DO total := total + r^.w; ids := ids + r^.owner^.id; r := r^.next; END_WHILE;
+WHILE r <> NULL DO total := total + r^.w; ids := ids + r^.owner^.id; r := r^.next; END_WHILE;
 size := SIZEOF(o) + SIZEOF(i1);"""
     text = program("o : Owner; i1, i2 : Item; r : REF_TO Item; total : REAL; ids : INT; size : DINT;", body, types)
     # Owner: INT at 0, address at 4 -> 8 bytes; Item: REAL at 0, two addresses at 4 and 8 -> 12 bytes

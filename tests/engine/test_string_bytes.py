@@ -270,6 +270,77 @@ def test_a_string_seen_past_the_end_of_its_variable_is_a_fault_naming_the_variab
     assert fault.origin.line == 6 + body.count("\n")
 
 
+#: CODESYS "Data type: STRING": "If a size is not defined, then CODESYS allocates 80 characters by default", so a
+#: ``POINTER TO STRING`` sees a STRING[80] (and a POINTER TO WSTRING a WSTRING[80]: Beckhoff's "WSTRING(80)").
+DEFAULT_LENGTH = 80
+
+
+def _longer(pointer: str, kind: str, held: int) -> str:
+    return (
+        f"the pointer {pointer} sees a {kind}[80], and the text there ({held} characters) runs on past its 80 "
+        f"characters: what CODESYS reads then is not documented; declare the pointer POINTER TO {kind}(n) with n at "
+        "least the text's length"
+    )
+
+
+@pytest.mark.parametrize(
+    ("declarations", "body", "message"),
+    [
+        (
+            "s : STRING(255); p : POINTER TO STRING; n : INT := -1;",
+            f"s := '{'x' * 103}';\np := ADR(s);\nn := LEN(p^);",
+            _longer("ADR(s)", "STRING", 103),
+        ),
+        (
+            "s : STRING(255); r : REF_TO STRING; n : INT := -1; t : STRING;",
+            f"s := '{'x' * 90}';\nr := REF(s);\nt := r^;",
+            _longer("REF(s)", "STRING", 90),
+        ),
+        (
+            "s : STRING(255); p : POINTER TO STRING; n : INT := -1;",
+            f"s := '{'x' * 85}';\np := ADR(s) + 4;\nn := LEN(p^);",  # 81 characters from byte 4 on
+            _longer("ADR(s) + 4", "STRING", 81),
+        ),
+        (
+            "w : WSTRING(255); p : POINTER TO WSTRING; n : INT := -1;",
+            f'w := "{"y" * 100}";\np := ADR(w);\nn := LEN(p^);',
+            _longer("ADR(w)", "WSTRING", 100),
+        ),
+    ],
+)
+def test_a_pointer_to_string_over_a_longer_text_is_a_located_fault_never_its_first_80_characters(
+    declarations, body, message
+):
+    """Brief polish25 item 2: ``p^`` of a POINTER TO STRING is a STRING[80]; over a STRING(255) holding more, what
+    CODESYS gives depends on memory past the 81 bytes the type covers, which it does not document, so the read is
+    the located fault naming the pointer and the text's length, and nothing is stored (n keeps -1)."""
+    sim = simulation(declarations, body)
+    sim.cycle(1)
+    fault = sim.fault
+    assert fault is not None and (fault.code, fault.message) == ("index_out_of_range", message)
+    assert (fault.pou, fault.origin.line) == ("MAIN", 6 + body.count("\n"))
+    assert sim.read("Main.n") == -1
+
+
+@settings(max_examples=25, deadline=None)
+@given(length=st.integers(0, 255))
+def test_len_through_a_pointer_to_string_is_the_texts_length_up_to_80_and_a_fault_beyond(length):
+    """Against the declared lengths: a POINTER TO STRING reads a text of at most 80 characters whole (LEN its length,
+    a copy the same text), a longer one faults; a POINTER TO STRING(255) reads any text of the STRING(255)."""
+    sim = simulation(
+        "s : STRING(255); p : POINTER TO STRING; q : POINTER TO STRING(255); n, m : INT := -1; t : STRING;",
+        f"s := '{'ab' * (length // 2)}{'c' * (length % 2)}';\nq := ADR(s);\nm := LEN(q^);\np := ADR(s);\n"
+        "t := p^;\nn := LEN(p^);",
+    )
+    sim.cycle(1)
+    assert sim.read("Main.m") == length
+    if length <= DEFAULT_LENGTH:
+        assert sim.fault is None and (sim.read("Main.n"), len(sim.read("Main.t"))) == (length, length)
+    else:
+        assert sim.fault is not None and sim.fault.message == _longer("ADR(s)", "STRING", length)
+        assert (sim.fault.origin.line, sim.read("Main.n"), sim.read("Main.t")) == (10, -1, "")
+
+
 def test_an_oscat_style_memcpy_copies_a_wstring_word_by_word():
     """``MEMCPY(ADR(dst), ADR(src), SIZEOF(src))`` (OSCAT's byte copy) over a WSTRING[3] copies its 8 bytes: 'A'
     16#0041, '€' 16#20AC, then the terminator; into another WSTRING[3] they are the same text."""

@@ -153,7 +153,7 @@ def test_subrange_and_string_lengths_need_no_conversion():
 
 
 def test_names_enums_members_and_indices():
-    color = Enum("TCOLOR", (("RED", 0), ("GREEN", 5), ("BLUE", 6)))
+    color = Enum("TCOLOR", (("red", 0), ("green", 5), ("blue", 6)))  # the values as declared
     assert value("blue", "c") == const(6, color)
     assert value("c = TColor#green", "b") == ir.Binary("EQ", local("C", color), const(5, color), BOOL)
     assert value("t1.Q", "b") == local("T1", BOOL, ir.Member("Q"))

@@ -112,7 +112,7 @@ def test_case_with_lists_ranges_constants_and_enums_st28():
         "TYPE TColor : (red, green := 5, blue); END_TYPE\nVAR_GLOBAL CONSTANT LIMIT_A : INT := 100; END_VAR",
     )
     r = local("R", INT)
-    color = Enum("TCOLOR", (("RED", 0), ("GREEN", 5), ("BLUE", 6)))
+    color = Enum("TCOLOR", (("red", 0), ("green", 5), ("blue", 6)))  # the values as declared
     assert statements == [
         ir.Case(
             local("CODE", INT),

@@ -60,7 +60,7 @@ def test_slot_types_of_every_kind():
     TPoint : STRUCT x : REAL := 1.5; p : TPercent := 7; END_STRUCT; END_TYPE""",
     )
     assert declared["A"].type == Array(INT, ((1, 2), (0, 3)))
-    assert declared["E"].type == Enum("TCOLOR", (("RED", 0), ("GREEN", 5), ("BLUE", 6)))
+    assert declared["E"].type == Enum("TCOLOR", (("red", 0), ("green", 5), ("blue", 6)))  # the values as declared
     percent = Subrange(INT, 0, 100)
     assert declared["S"].type == Struct("TPOINT", (StructField("X", REAL, 1.5), StructField("P", percent, 7)))
     assert declared["R"].type == percent

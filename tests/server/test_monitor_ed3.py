@@ -1,6 +1,6 @@
 """The online websocket with the IEC ed. 3 / CODESYS types of issue 25: LTIME and LDATE_AND_TIME travel as ns with
 their type names (the browser writes them as LTIME#/LDT# literals, iec.json's value_texts), a user writes an LTIME
-as a literal, a based enumeration shows by name, a REFERENCE TO by the REF(...) text it was made by."""
+as a literal, a based enumeration shows by name (as declared: Low, High), a REFERENCE TO by the REF(...) text it was made by."""
 
 from __future__ import annotations
 
@@ -42,7 +42,7 @@ def test_long_times_based_enums_and_references_online(
         assert first["types"] == {
             "MAIN.LT": {"name": "LTIME", "names": None},
             "MAIN.AT_": {"name": "LDATE_AND_TIME", "names": None},
-            "MAIN.LV": {"name": "LEVEL", "names": {"-10": "LOW", "10": "HIGH"}},
+            "MAIN.LV": {"name": "LEVEL", "names": {"-10": "Low", "10": "High"}},
             "MAIN.R": {"name": "REF_TO", "names": None},
         }
         ws.send_json({"type": "write", "path": "Main.lt", "value": "LT#5s250ns"})

@@ -104,6 +104,7 @@ def test_samples_stream_while_recording_and_trace_stop_ends_it(client: TestClien
             "values": {"MAIN.COUNT": [], "MAIN.FLAG": []},
             "triggered": None,
             "lost": 0,
+            "types": {"MAIN.COUNT": {"name": "INT", "names": None}, "MAIN.FLAG": {"name": "BOOL", "names": None}},
         }
         cycles(ws, 3)
         merged, _ = collect(ws, lambda m: len(m["scans"]) >= 3)  # before the trace ends: it is live

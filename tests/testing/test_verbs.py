@@ -104,6 +104,21 @@ END_TEST
     }
 
 
+def test_an_enumeration_value_in_a_failure_is_named_as_declared():
+    """Brief polish25 item 1: ``TYPE Color : (Red, Green, blueIsh := 7)`` - a failure names the values as the
+    declaration writes them (the type by its canonical name, as the online types do), whatever case the test used."""
+    source = "TYPE Color : (Red, Green, blueIsh := 7); END_TYPE\n"
+    TEXT = """
+TEST 'color'
+  VAR c : Color := Green; END_VAR
+  ASSERT_EQ(c, COLOR#BLUEISH);
+END_TEST
+"""
+    assert outcomes(run(source, TEXT)) == {
+        "color": f"ASSERT_EQ failed: c expected COLOR#blueIsh, got COLOR#Green @{at(TEXT, 'ASSERT_EQ(c,')}"
+    }
+
+
 def test_the_first_failing_assertion_ends_the_test_and_each_test_starts_fresh():
     TEXT = """
 SETUP

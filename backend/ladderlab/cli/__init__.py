@@ -17,6 +17,7 @@ from ..model import has_errors
 from ..simulation.registry import SimulationRegistry, SimulationSettings
 from ..storage import StorageError, load_project_path
 from ..storage.atomic import write_atomic
+from ..storage.load import load_project_with_warnings
 from ..storage.project_folder import revision_of
 from ..storage.text_files import CLI_HINT, xml_for_parser
 from .doc import add_doc_command
@@ -250,7 +251,9 @@ def _load(args: argparse.Namespace) -> Project:
     from ..st.types import typing_rules
 
     with typing_rules(getattr(args, "typing", None) or "iec"):
-        project = load_project_path(args.project, encoding_of(args))
+        project, warnings = load_project_with_warnings(args.project, encoding_of(args))
+    for warning in warnings:  # a .st file's: not the command's result, so beside any error, never failing it
+        print(warning.format(), file=sys.stderr)
     return using_libraries(project, args)
 
 

@@ -124,8 +124,8 @@ class TypeLowering:
                     limits.ARRAY_ELEMENTS.message(f"the array has {count:,} elements"), code="LIMIT-SIZE"
                 )
             return array
-        if isinstance(ty, t.EnumType):
-            return Enum(ty.name.upper(), tuple((name, value) for name, (_, value) in ty.values.items()), ty.base)
+        if isinstance(ty, t.EnumType):  # the values as declared: online views show them so (CODESYS does)
+            return Enum(ty.name.upper(), tuple(ty.values.values()), ty.base)
         if isinstance(ty, t.StructType):
             return self._struct(ty, spec)
         if isinstance(ty, t.FbType):

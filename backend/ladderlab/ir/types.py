@@ -42,8 +42,9 @@ class Subrange:
 
 @dataclass(frozen=True)
 class Enum:
-    """Enumeration values are ints; ``values`` maps each name to its int, in declaration order; ``base`` is the
-    integer type CODESYS stores it as (its SIZEOF)."""
+    """Enumeration values are ints; ``values`` maps each name, spelled as declared (online views and test reports
+    show it so; lookups ignore case), to its int, in declaration order; ``base`` is the integer type CODESYS stores
+    it as (its SIZEOF)."""
 
     name: str
     values: tuple[tuple[str, int], ...]

@@ -333,7 +333,9 @@ class DisplayType(Model):
         description="The IEC elementary type (TIME, DATE, WORD...; a subrange's base type), "
         "or the name of the enumeration, structure or FB type."
     )
-    names: dict[str, str] | None = Field(default=None, description="An enumeration's value names by value.")
+    names: dict[str, str] | None = Field(
+        default=None, description="An enumeration's value names by value, spelled as declared (writes take any case)."
+    )
 
 
 class StackVariable(Model):
@@ -460,6 +462,11 @@ class TraceData(Model):
     values: dict[str, list[Value]]
     triggered: TraceTriggered | None = None
     lost: int = 0
+    types: dict[str, DisplayType] = Field(
+        default_factory=dict,
+        description="In a trace's first chunk: how to show each path's values (an enumeration's names), as the "
+        "first values message after a subscribe says; empty in the others.",
+    )
 
 
 #: What an online log entry is about, so the log can be filtered (seed ON-15).

@@ -654,7 +654,8 @@ class SimRunner:
     def force(self, path: str, value: object) -> None:
         location = self._location(path)
         _coerced(self.sim.force, path, value)
-        self._log("force", "info", f"forced {location.path} := {value_text(self.sim.read(path))}")
+        forced, named = self.sim.read(path), display_type(location.type).names or {}
+        self._log("force", "info", f"forced {location.path} := {named.get(str(forced)) or value_text(forced)}")
 
     def unforce(self, path: str) -> None:
         location = self._location(path)
@@ -1139,7 +1140,8 @@ class SimRunner:
             plan = plan_trace(self._location, paths, TraceTrigger(**trigger) if trigger else None)
         except TraceRefused as error:
             raise CommandError("bad_path", str(error)) from None
-        self.traces.start(owner, trace_id, plan, samples, self.sim)
+        types = {location.path: display_type(location.type).model_dump() for location in plan.locations}
+        self.traces.start(owner, trace_id, plan, samples, self.sim, types)
 
     def stop_trace(self, owner: object) -> None:
         if not self.traces.stop(owner):

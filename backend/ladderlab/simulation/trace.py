@@ -98,6 +98,7 @@ class _Recorder:
     triggered: dict[str, Any] | None = None  # TraceTriggered's fields
     lost: int = 0
     unreported: bool = True  # a state change (or the start) the client has not been told about
+    types: dict[str, Any] = field(default_factory=dict)  # each path's DisplayType fields, until the first chunk
 
     def sample(self, sim: Simulation) -> None:
         plan = self.plan
@@ -134,10 +135,11 @@ class _Recorder:
             "values": values,
             "triggered": self.triggered,
             "lost": self.lost,
+            "types": self.types,
         }
         self.scans, self.times = [], []
         self.columns = [[] for _ in self.plan.locations]
-        self.triggered, self.lost, self.unreported = None, 0, False
+        self.triggered, self.lost, self.unreported, self.types = None, 0, False, {}
         return data
 
 
@@ -147,8 +149,17 @@ class TraceBook:
     def __init__(self) -> None:
         self._traces: dict[object, _Recorder] = {}
 
-    def start(self, owner: object, trace_id: int, plan: TracePlan, samples: int | None, sim: Simulation) -> None:
-        """Start (or replace) ``owner``'s trace (reads the trigger's value now)."""
+    def start(
+        self,
+        owner: object,
+        trace_id: int,
+        plan: TracePlan,
+        samples: int | None,
+        sim: Simulation,
+        types: dict[str, Any] | None = None,
+    ) -> None:
+        """Start (or replace) ``owner``'s trace (reads the trigger's value now); ``types``: each path's DisplayType
+        fields, which its first chunk carries."""
         previous = sim.value(plan.trigger) if plan.trigger is not None else None
         self._traces[owner] = _Recorder(
             trace_id,
@@ -157,6 +168,7 @@ class TraceBook:
             previous,
             state="waiting" if plan.trigger else "recording",
             columns=[[] for _ in plan.locations],
+            types=types or {},
         )
 
     def stop(self, owner: object) -> bool:

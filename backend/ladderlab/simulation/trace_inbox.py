@@ -6,7 +6,7 @@ from __future__ import annotations
 import threading
 from typing import Any
 
-from ..model.monitor import MAX_TRACE_SAMPLES, TraceData, TraceTriggered
+from ..model.monitor import MAX_TRACE_SAMPLES, DisplayType, TraceData, TraceTriggered
 
 
 class TraceInbox:
@@ -56,10 +56,14 @@ class TraceInbox:
                 return None
             if pending["state"] == "done":
                 self._running.discard(owner)
-        triggered = pending["triggered"]
+        triggered, types = pending["triggered"], pending.get("types") or {}
         return TraceData.model_construct(
             type="trace_data",
-            **{**pending, "triggered": TraceTriggered(**triggered) if triggered is not None else None},
+            **{
+                **pending,
+                "triggered": TraceTriggered(**triggered) if triggered is not None else None,
+                "types": {path: DisplayType(**shown) for path, shown in types.items()},
+            },
         )
 
     def active(self, owner: object) -> bool:

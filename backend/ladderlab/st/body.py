@@ -425,12 +425,7 @@ class BodyChecker:
         if isinstance(combined, t.UNTYPED):
             combined = untyped_result(op, left, right) if op not in _COMPARISON else combined
         if verdict == "error":
-            self.report(
-                "ST-TYPE-MISMATCH",
-                f"'{op}' needs operands of the same type: {left} and {right}; "
-                f"convert one of them (e.g. {_hint(left, right)})",
-                node,
-            )
+            self.report("ST-TYPE-MISMATCH", _mixed_operands(op, left, right), node)
             return ERROR
         if verdict == "widen":
             self.report(
@@ -737,6 +732,17 @@ def _enums_in(ty: Type):
     elif isinstance(ty, t.StructType):
         for _, field_type in ty.fields.values():
             yield from _enums_in(field_type)
+
+
+def _mixed_operands(op: str, left: Type, right: Type) -> str:
+    """What ST-TYPE-MISMATCH says of two operands of different types: a conversion to write, or, for a pointer
+    compared with 0 under IEC typing, that its "no variable" is NULL."""
+    if t.zero_for_null(left, right) or t.zero_for_null(right, left):
+        first, second = ("0" if isinstance(side, t.UntypedInt) else str(side) for side in (left, right))
+        return f"'{op}' needs operands of the same type: {first} and {second}: {t.NULL_NOT_ZERO}"
+    return (
+        f"'{op}' needs operands of the same type: {left} and {right}; convert one of them (e.g. {_hint(left, right)})"
+    )
 
 
 def _hint(left: Type, right: Type) -> str:

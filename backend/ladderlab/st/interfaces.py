@@ -216,10 +216,11 @@ def attempted_fb(ty: t.Type) -> Any:
 
 def reference_comparison(left: t.Type, right: t.Type) -> bool:
     """``i = j``, ``i <> NULL`` and CODESYS's ``i <> 0`` / ``p <> 0``: whether interface variables refer to one
-    instance, whether a pointer or interface variable is NULL (CODESYS's 0: no other number is an address here)."""
+    instance, whether a pointer or interface variable is NULL (CODESYS's 0: no other number is an address here).
+    A pointer compared with 0 is CODESYS typing's only: IEC ed. 3 compares a reference with NULL and references."""
     if not isinstance(left, (t.InterfaceType, t.PointerType)):
         left, right = right, left
-    zero = isinstance(right, t.UntypedInt) and right.value == 0
     if isinstance(left, t.PointerType):
-        return zero and not left.implicit  # a REFERENCE TO compares its target's value
+        return t.null_literal(left, right)  # a REFERENCE TO compares its target's value
+    zero = isinstance(right, t.UntypedInt) and right.value == 0
     return isinstance(left, t.InterfaceType) and (isinstance(right, (t.InterfaceType, t.NullType)) or zero)

@@ -8,7 +8,7 @@ examples can go through ``check_project`` exactly like edited projects.
 from __future__ import annotations
 
 import bisect
-from typing import Any
+from typing import Any, NamedTuple
 
 from ..model.diagnostics import Diagnostic
 from ..model.project import (
@@ -68,15 +68,30 @@ class _Text:
         return _keep_lines("\n".join(self.of(n) for n in nodes), (first.line, first.column))
 
 
+class ReadSource(NamedTuple):
+    """A file read into a project: its diagnostics, and among them the warnings a check of the project cannot
+    repeat (on text the project does not keep, as a pragma above a PROGRAM, or about how the file was cut)."""
+
+    project: Project | None
+    diagnostics: list[Diagnostic]
+    unkept: list[Diagnostic]
+
+
 def source_to_project(
     text: str, name: str = "imported", *, nested_comments: bool = False
 ) -> tuple[Project | None, list[Diagnostic]]:
+    read = read_source(text, name, nested_comments=nested_comments)
+    return read.project, read.diagnostics
+
+
+def read_source(text: str, name: str = "imported", *, nested_comments: bool = False) -> ReadSource:
     st_text, il_pous = blank_il_bodies(text)  # IL bodies are read from ``text`` (docs/il.md)
     parsed = parse_source(st_text, nested_comments=nested_comments)
     if parsed.ast is None:
-        return None, parsed.diagnostics
+        return ReadSource(None, parsed.diagnostics, [])
     source = _Text(text)
     diagnostics = list(parsed.diagnostics)
+    kept: list[ast.Span] = []  # the items whose text the project keeps: the check reads them again
     types, globals_, pous, configurations = [], [], [], []
     gvls: list[tuple[str, bool, list[str]]] = []  # named lists: (name, qualified_only, block texts)
     listing = False  # the VAR_GLOBAL blocks go on the last list (no other item since its pragma)
@@ -92,6 +107,10 @@ def source_to_project(
         elif heading is not None:
             gvls.append((*heading, []))
         listing = isinstance(item, ast.VarBlock) and (listing or heading is not None)
+        if isinstance(item, (ast.VarBlock, ast.TypeBlock, ast.InterfaceDecl)) or (
+            isinstance(item, ast.Pou) and item.sfc is None
+        ):
+            kept.append(item.span)
         if listing:
             gvls[-1][2].append(source.of(item))
         elif isinstance(item, ast.TypeBlock):
@@ -120,7 +139,15 @@ def source_to_project(
         pous=pous,
         configuration=configuration,
     )
-    return project, diagnostics
+    own = diagnostics[len(parsed.diagnostics) :]  # how the file was cut: no check says it again
+    unkept = [d for d in parsed.diagnostics if not _within(d, kept)] + own
+    return ReadSource(project, diagnostics, [d for d in unkept if d.severity == "warning"])
+
+
+def _within(diagnostic: Diagnostic, spans: list[ast.Span]) -> bool:
+    """Whether a diagnostic lies in one of ``spans``."""
+    at = (diagnostic.line or 0, diagnostic.column or 0)
+    return any((span.line, span.column) <= at < (span.end_line, span.end_column) for span in spans)
 
 
 def _pou(pou: ast.Pou, source: _Text, language: str) -> Pou:

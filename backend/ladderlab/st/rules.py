@@ -48,8 +48,8 @@ def assignable_or_report(checker: Any, target: Type, value: Type, node, what: st
         )
         return False
     hint, shown = t.conversion_hint(target, value), str(value)
-    if isinstance(target, t.PointerType) and isinstance(value, t.UntypedInt) and value.value == 0:
-        hint, shown = ": under IEC typing a reference to no variable is NULL (CODESYS typing also takes 0)", "0"
+    if t.zero_for_null(target, value):
+        hint, shown = f": {t.NULL_NOT_ZERO}", "0"
     if what == "assign":
         message = f"cannot assign {shown} to {target}{hint}"
     elif what == "init":

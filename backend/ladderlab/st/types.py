@@ -378,8 +378,17 @@ def assignable(target: Type, source: Type) -> str | None:
 def null_literal(target: Type, source: Type) -> bool:
     """``p := 0`` under CODESYS typing: the literal 0 stored in a POINTER TO / REF_TO is NULL (CODESYS's null
     address, as ``p <> 0`` tests it); IEC 61131-3 ed. 3 stores only NULL in a reference (6.4.4.10.2)."""
+    return zero_for_null(target, source) and codesys_typing()
+
+
+#: Why IEC typing refuses the literal 0 where a POINTER TO / REF_TO is stored or compared (ed. 3 6.4.4.10.2).
+NULL_NOT_ZERO = "under IEC typing a reference to no variable is NULL (CODESYS typing also takes 0)"
+
+
+def zero_for_null(target: Type, source: Type) -> bool:
+    """The literal 0 written for a POINTER TO / REF_TO (not a REFERENCE TO, whose 0 is its target's value)."""
     zero = isinstance(source, UntypedInt) and source.value == 0
-    return zero and isinstance(target, PointerType) and not target.implicit and codesys_typing()
+    return zero and isinstance(target, PointerType) and not target.implicit
 
 
 def common(a: Type, b: Type) -> tuple[Type, str | None]:

@@ -20,19 +20,27 @@ from .workspace import LOCKS_DIR
 def load_project_path(path: Path | str, encoding: str | None = None, hint: str = CLI_HINT) -> Project:
     """Read whatever a user points the CLI at, its files in ``encoding`` (default UTF-8); raises ProjectLoadError
     with located diagnostics (a file that does not decode: BAD-ENCODING at its first bad byte)."""
+    return load_project_with_warnings(path, encoding, hint)[0]
+
+
+def load_project_with_warnings(
+    path: Path | str, encoding: str | None = None, hint: str = CLI_HINT
+) -> tuple[Project, list[Diagnostic]]:
+    """``load_project_path``, with the warnings of reading a .st / .il file that a check of the project cannot
+    repeat (located in the file: a misplaced pragma outside any POU, a second CONFIGURATION left out)."""
     path = Path(path)
     if path.is_dir():
         _finish_interrupted_save(path)
         if not (path / PROJECT_FILE).is_file():
             raise _error(str(path), f"not a project folder: it has no {PROJECT_FILE}")
-        return read_project_folder(path, encoding, hint)
+        return read_project_folder(path, encoding, hint), []
     if not path.is_file():
         raise _error(str(path), "no such file or folder")
     if path.suffix.lower() == ".json":
-        return _load_json_project(path, decode_text(path.read_bytes(), path.name, encoding, hint))
+        return _load_json_project(path, decode_text(path.read_bytes(), path.name, encoding, hint)), []
     if path.suffix.lower() in (".st", ".il"):  # IEC source; a POU whose body is IL is IL in either (docs/il.md)
         text = decode_text(path.read_bytes(), path.name, encoding, hint)
-        return project_from_st(text, name=path.stem, file=path.name)
+        return project_and_warnings_from_st(text, name=path.stem, file=path.name)
     raise _error(str(path), "expected a project folder, a project .json file or a .st or .il file")
 
 
@@ -78,13 +86,18 @@ def project_from_st(text: str, *, name: str, file: str) -> Project:
     becomes the project's tasks; POU texts keep the file's line numbers, so later
     diagnostics point into it.
     """
-    from ..st.project_text import source_to_project  # the parser: imported at first use (startup, issue 27)
+    return project_and_warnings_from_st(text, name=name, file=file)[0]
 
-    project, diagnostics = source_to_project(text, name)
-    errors = [d for d in diagnostics if d.severity == "error"]
-    if project is None or errors:
-        raise ProjectLoadError([d.model_copy(update={"file": file}) for d in errors or diagnostics])
-    return project
+
+def project_and_warnings_from_st(text: str, *, name: str, file: str) -> tuple[Project, list[Diagnostic]]:
+    """``project_from_st`` and the reading's warnings no check of the project repeats, located in ``file``."""
+    from ..st.project_text import read_source  # the parser: imported at first use (startup, issue 27)
+
+    read = read_source(text, name)
+    errors = [d for d in read.diagnostics if d.severity == "error"]
+    if read.project is None or errors:
+        raise ProjectLoadError([d.model_copy(update={"file": file}) for d in errors or read.diagnostics])
+    return read.project, [d.model_copy(update={"file": file}) for d in read.unkept]
 
 
 def _error(file: str, message: str) -> ProjectLoadError:

@@ -1365,7 +1365,7 @@ export interface components {
       name: string;
       /**
        * Names
-       * @description An enumeration's value names by value.
+       * @description An enumeration's value names by value, spelled as declared (writes take any case).
        */
       names?: {
         [key: string]: string;

@@ -700,7 +700,7 @@ export interface DisplayType {
    */
   name: string;
   /**
-   * An enumeration's value names by value.
+   * An enumeration's value names by value, spelled as declared (writes take any case).
    */
   names?: {
     [k: string]: string;
@@ -745,6 +745,12 @@ export interface TraceData {
   time_ms: number[];
   triggered?: TraceTriggered | null;
   type: "trace_data";
+  /**
+   * In a trace's first chunk: how to show each path's values (an enumeration's names), as the first values message after a subscribe says; empty in the others.
+   */
+  types?: {
+    [k: string]: DisplayType;
+  };
   values: {
     [k: string]: (
       | boolean

@@ -5,6 +5,7 @@
 import { useEffect, useEffectEvent, useRef, useState } from "react";
 import uPlot from "uplot";
 import "uplot/dist/uPlot.min.css";
+import type { DisplayType } from "../generated/monitor";
 import { usePanels } from "../store/panels";
 import { chartData, legendValue, LANE, type ChartData } from "./chartData";
 import type { Kind } from "./csv";
@@ -31,6 +32,8 @@ const PANEL_CHROME = 120;
 export interface TraceChartProps {
   paths: readonly string[];
   kinds: readonly (Kind | null)[];
+  /** How to show each path's values in the legend (an enumeration's names). */
+  types: readonly (DisplayType | null)[];
   ring: SampleRing;
   /** Changes whenever the ring does. */
   version: number;
@@ -198,7 +201,7 @@ function options(
   };
 }
 
-export function TraceChart({ paths, kinds, ring, version, origin, laneView, viewing, onPick }: TraceChartProps) {
+export function TraceChart({ paths, kinds, types, ring, version, origin, laneView, viewing, onPick }: TraceChartProps) {
   const host = useRef<HTMLDivElement>(null);
   const plot = useRef<uPlot | null>(null);
   const zoomed = useRef(false);
@@ -207,7 +210,7 @@ export function TraceChart({ paths, kinds, ring, version, origin, laneView, view
   const [width, setWidth] = useState(640);
   const panelHeight = usePanels((s) => s.height);
   const height = Math.max(HEIGHT, (panelHeight ?? 0) - PANEL_CHROME);
-  const layout = JSON.stringify([paths, kinds, laneView]);
+  const layout = JSON.stringify([paths, kinds, types, laneView]);
 
   useEffect(() => {
     const el = host.current;
@@ -220,7 +223,7 @@ export function TraceChart({ paths, kinds, ring, version, origin, laneView, view
   /** A chart of the current series in `el` (effect events read the props of the latest render). */
   const build = useEffectEvent((el: HTMLDivElement) => {
     zoomed.current = false;
-    const chart = chartData(paths, kinds, ring.columnsInOrder(), origin, laneView);
+    const chart = chartData(paths, kinds, ring.columnsInOrder(), origin, laneView, types);
     const onZoom = () => void (zoomed.current = true);
     const onReset = () => void (zoomed.current = false);
     const pick = (index: number) => {
@@ -245,7 +248,7 @@ export function TraceChart({ paths, kinds, ring, version, origin, laneView, view
     u.redraw(false);
   });
   const refresh = useEffectEvent((u: uPlot) => {
-    const chart = chartData(paths, kinds, ring.columnsInOrder(), origin, laneView);
+    const chart = chartData(paths, kinds, ring.columnsInOrder(), origin, laneView, types);
     u.setData(chart.data as uPlot.AlignedData, !zoomed.current);
   });
 

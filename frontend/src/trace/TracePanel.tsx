@@ -3,6 +3,7 @@
 // samples stream in and show as a chart (or a table), Export CSV saves them.
 import { lazy, Suspense, useEffect, useMemo, useState, type FormEvent } from "react";
 import { projectApi } from "../api/client";
+import type { DisplayType } from "../generated/monitor";
 import { downloadText } from "../ui/download";
 import { pathKey } from "../online/monitor";
 import { onlineStore, useOnline } from "../online/store";
@@ -70,11 +71,13 @@ export function statusText(
 function SamplesTable({
   paths,
   kinds,
+  types,
   ring,
   origin,
 }: {
   paths: string[];
   kinds: (Kind | null)[];
+  types: (DisplayType | null)[];
   ring: SampleRing;
   origin: number;
 }) {
@@ -119,7 +122,7 @@ function SamplesTable({
                 <td>{sample.timeMs - origin}</td>
                 <td>{sample.scan}</td>
                 {sample.values.map((v, c) => (
-                  <td key={c}>{formatSample(v, kinds[c] ?? "number")}</td>
+                  <td key={c}>{formatSample(v, kinds[c] ?? "number", types[c])}</td>
                 ))}
               </tr>
             );
@@ -260,7 +263,7 @@ export function TracePanel() {
   const project = useWorkspace((s) => s.name);
   const [view, setView] = useState<"chart" | "table">("chart");
   const busy = state.phase === "starting" || state.phase === "waiting" || state.phase === "recording";
-  const { ring, recorded, kinds, origin } = state;
+  const { ring, recorded, kinds, types, origin } = state;
   const viewing = useOnline((s) => s.monitor.history?.viewing ?? null);
   /** A click on the chart: that scan from the history, when the history still holds it. */
   const showScan = (scan: number) => {
@@ -276,6 +279,7 @@ export function TracePanel() {
         recorded,
         kinds.map((k) => k ?? "number"),
         ring.columnsInOrder(),
+        types,
       ),
       "text/csv;charset=utf-8",
     );
@@ -324,6 +328,7 @@ export function TracePanel() {
               <TraceChart
                 paths={recorded}
                 kinds={kinds}
+                types={types}
                 ring={ring}
                 version={state.version}
                 origin={origin}
@@ -333,7 +338,7 @@ export function TracePanel() {
               />
             </Suspense>
           ) : (
-            <SamplesTable paths={recorded} kinds={kinds} ring={ring} origin={origin} />
+            <SamplesTable paths={recorded} kinds={kinds} types={types} ring={ring} origin={origin} />
           )
         ) : (
           <p className="panel-empty">

@@ -44,5 +44,8 @@ describe("chartData", () => {
       "—",
     ]);
     expect(legendValue({ path: "MAIN.N", kind: "number", scale: "y", offset: 0 }, 12.5)).toBe("12.5");
+    const mode = { name: "MODE", names: { "0": "Idle", "5": "Run" } };
+    const series = chartData(["MAIN.M"], ["number"], new SampleRing(1, 1).columnsInOrder(), 0, false, [mode]).series;
+    expect(legendValue(series[0]!, 5)).toBe("Run"); // an enumeration: its value's name, as declared
   });
 });

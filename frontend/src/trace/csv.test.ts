@@ -17,6 +17,16 @@ describe("traceCsv", () => {
     );
   });
 
+  it("writes an enumeration's values by name, as the server spells them (declared: Run, not RUN)", () => {
+    const ring = new SampleRing(2, 2);
+    ring.push(1, 10, [5, 5]);
+    ring.push(2, 20, [0, 0]);
+    const mode = { name: "MODE", names: { "0": "Idle", "5": "Run" } };
+    expect(traceCsv(["MAIN.M", "MAIN.N"], ["number", "number"], ring.columnsInOrder(), [mode, null])).toBe(
+      "time_ms,scan,MAIN.M,MAIN.N\n10,1,Run,5\n20,2,Idle,0\n",
+    );
+  });
+
   it("quotes paths that hold a comma or a quote", () => {
     expect(csvField("MAIN.GRID[1,2]")).toBe('"MAIN.GRID[1,2]"');
     expect(csvField('say "hi"')).toBe('"say ""hi"""');

@@ -77,6 +77,19 @@ describe("trace store", () => {
     expect(s().ring!.length).toBe(3);
   });
 
+  it("keeps how the first chunk says to show each path (an enumeration's names as declared)", () => {
+    const { s } = setup();
+    s().addPath("Main.m");
+    s().addPath("Main.n");
+    s().start();
+    const mode = { name: "MODE", names: { "0": "Idle", "5": "Run" } };
+    s().receive(
+      chunk({ values: { "MAIN.M": [], "MAIN.N": [] }, types: { "MAIN.M": mode, "MAIN.N": { name: "INT" } } }),
+    );
+    s().receive(chunk({ scans: [1], time_ms: [10], values: { "MAIN.M": [5], "MAIN.N": [1] }, types: {} }));
+    expect(s().types).toEqual([mode, { name: "INT" }]);
+  });
+
   it("records until Stop without a buffer limit when Stop when full is off, keeping the newest samples", () => {
     const { s, sent } = setup();
     s().addPath("Main.N");

@@ -5,7 +5,7 @@
 // re-render on it. Sending and hearing the monitor socket are injected so tests drive the store.
 import { useStore } from "zustand";
 import { createStore, type StoreApi } from "zustand/vanilla";
-import type { TraceStart, TraceTriggered } from "../generated/monitor";
+import type { DisplayType, TraceStart, TraceTriggered } from "../generated/monitor";
 import { pathKey } from "../online/monitor";
 import { onlineStore } from "../online/store";
 import type { ClientMessage, ServerMessage } from "../online/protocol";
@@ -36,6 +36,8 @@ export interface TraceStateData {
   /** What the server records, as it names the paths (set by the first chunk). */
   recorded: string[];
   kinds: (Kind | null)[];
+  /** How to show each recorded path's values (an enumeration's names), from the trace's first chunk. */
+  types: (DisplayType | null)[];
   ring: SampleRing | null;
   /** The scan whose trigger started the recording. */
   triggered: TraceTriggered | null;
@@ -82,6 +84,7 @@ export const initialTrace: TraceStateData = {
   id: 0,
   recorded: [],
   kinds: [],
+  types: [],
   ring: null,
   triggered: null,
   origin: null,
@@ -135,6 +138,7 @@ export function createTraceStore(deps: TraceDeps): StoreApi<TraceState> {
         id,
         recorded: [],
         kinds: [],
+        types: [],
         ring: null,
         triggered: null,
         origin: null,
@@ -161,6 +165,7 @@ export function createTraceStore(deps: TraceDeps): StoreApi<TraceState> {
       const ring = state.ring ?? new SampleRing(state.capacity, recorded.length);
       const columns = recorded.map((p) => msg.values[p] ?? []);
       const kinds = recorded.map((_, c) => state.kinds[c] ?? kindOf(columns[c]!.find((v) => v !== null)));
+      const types = recorded.map((p, c) => state.types[c] ?? msg.types?.[p] ?? null);
       for (let i = 0; i < msg.scans.length; i++)
         ring.push(
           msg.scans[i]!,
@@ -171,6 +176,7 @@ export function createTraceStore(deps: TraceDeps): StoreApi<TraceState> {
         phase: msg.state,
         recorded,
         kinds,
+        types,
         ring,
         triggered: msg.triggered ?? state.triggered,
         origin: state.origin ?? msg.time_ms[0] ?? null,

@@ -113,7 +113,7 @@ class String:
             data = b""
         if len(data) != len(value) * self.unit:  # a STRING's 'П' (a CoDeSys 2.3 file's cp1251): its byte is unknown
             unheld = unheld_character(value, self.wide) or value[0]
-            raise PlcRuntimeError(INVALID_ARGUMENT, f"the bytes of {self._name}: {unheld_message(unheld, self.wide)}")
+            raise PlcRuntimeError(INVALID_ARGUMENT, f"the bytes of {self.name}: {unheld_message(unheld, self.wide)}")
         return data.ljust(self.size, b"\0")
 
     def decode(self, data: bytes) -> str:
@@ -135,13 +135,13 @@ class String:
         try:
             new = self.decode(bytes(whole))
         except PlcRuntimeError:
-            raise _not_kept(f"the bytes {bytes(whole).hex()} for a {self._name}, which are no UCS-2 text") from None
+            raise _not_kept(f"the bytes {bytes(whole).hex()} for a {self.name}, which are no UCS-2 text") from None
         if len(new) > self.length or self.encode(new) != whole:
-            raise _not_kept(f"a {self._name} with characters after its terminator (or none)")
+            raise _not_kept(f"a {self.name} with characters after its terminator (or none)")
         return new
 
     @property
-    def _name(self) -> str:
+    def name(self) -> str:
         return f"{'WSTRING' if self.wide else 'STRING'}[{self.length}]"
 
 
@@ -272,11 +272,16 @@ class ViewRef(Ref):
         return self.seen.size
 
     def _read(self, value: object, span: int) -> bytes:
-        """The ``span`` bytes seen from ``offset``; a STRING's text must end inside them (else it reads on past the
-        variable: a fault naming the bytes it would reach)."""
+        """The ``span`` bytes seen from ``offset``; a STRING's text must end inside them: else it reads on past the
+        variable (a fault naming the bytes it would reach) or past the STRING[n] the pointer sees (a fault too:
+        CODESYS documents no value for a ``POINTER TO STRING`` over a longer text, STRING being STRING[80])."""
         data = self.whole.read(value, self.offset, span)
-        if span < self.seen.size and not _terminated(data, self.seen):
-            raise pointer_outside_bytes(f"the pointer {self.text}", self.offset, span + self.seen.unit, self.whole.size)
+        if isinstance(self.seen, String) and not _terminated(data, self.seen):
+            if span < self.seen.size:
+                raise pointer_outside_bytes(
+                    f"the pointer {self.text}", self.offset, span + self.seen.unit, self.whole.size
+                )
+            raise PlcRuntimeError(INDEX_RANGE, _longer_than_seen(self, value))
         return data
 
     def _encoded(self, new: object, span: int) -> bytes:
@@ -371,6 +376,20 @@ class ViewRef(Ref):
 
     def __hash__(self) -> int:
         return hash((id(self.c), self.k, self.offset))
+
+
+def _longer_than_seen(ref: ViewRef, value: object) -> str:
+    """Why a STRING[n] read through a pointer stops: the text there is longer than n (a STRING(255) seen by a
+    ``POINTER TO STRING``); how long, when the variable is a STRING itself."""
+    seen, whole = ref.seen, ref.whole
+    held = ""
+    if isinstance(whole, String) and isinstance(value, str):
+        held = f" ({len(value) - ref.offset // whole.unit} characters)"
+    return (
+        f"the pointer {ref.text} sees a {seen.name}, and the text there{held} runs on past its {seen.length} "
+        "characters: what CODESYS reads then is not documented; declare the pointer "
+        f"POINTER TO {'WSTRING' if seen.wide else 'STRING'}(n) with n at least the text's length"
+    )
 
 
 def _terminated(data: bytes, seen: Any) -> bool:
