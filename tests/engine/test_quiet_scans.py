@@ -101,9 +101,11 @@ def test_after_a_quiet_scan_views_variants_states_and_resets_show_no_stale_power
     _assert_unknown(live, every)
     live.use_variant("monitor", monitor)
     _assert_unknown(live, every)
-    live.reset()  # a restart runs no scan: the quiet one stays unknown
+    live.reset()  # a restart runs no scan: no element ran since (nothing unknown, nothing stale)
     reference.reset()
-    _assert_unknown(live, every)
+    assert live.probes("Main", every).executed == frozenset()
+    shown = reference.probes("Main", every)
+    assert (shown.executed, shown.unknown) == (frozenset(), frozenset())
     live.record(True)
     live.view({"Main": every})
     live.cycle(1)
@@ -196,3 +198,24 @@ def test_a_scan_that_faults_after_a_quiet_one_is_unknown_too():
         assert live.quiet is quiet_before
         view = live.probes("Main", ["s", "d", "o"])
         assert view.unknown == ({"s", "d", "o"} if quiet_before else frozenset())
+
+
+@fuzz_settings(fast=15)
+@given(project=ld_programs(), scans=st.integers(1, 3), cold=st.booleans())
+def test_after_a_reset_no_element_shows_the_power_flow_of_the_scan_before_it(project, scans, cold):
+    """A restart sets the initial values and runs no scan: the power flow of the last scan before it would be
+    shown beside values it was not computed from (a lit coil whose variable is FALSE again), so until the next scan
+    no element ran, in the monitor variant and in the debug variant alike; the next scan is shown exactly."""
+    live, reference = _pair(project, 3)
+    every = [e for ids in _networks(live).values() for e in ids]
+    live.view({"Main": every})
+    live.cycle(scans)
+    reference.cycle(scans)
+    for sim in (live, reference):
+        sim.reset(cold=cold)
+        view = sim.probes("Main", every)
+        assert (view.executed, view.unknown) == (frozenset(), frozenset()), "no element ran since the restart"
+    live.cycle(1)
+    reference.cycle(1)
+    assert _shown(live, every) == _shown(reference, every)
+    assert live.probes("Main", every).executed, "the scan after the restart ran its networks"

@@ -311,6 +311,10 @@ class Simulation:
         if initialise:
             self._initialise(warm=not cold, implicit=implicit)
         self._apply_forces()
+        # A restart runs no scan: no element ran since, so the power flow of the scan before it (its probe groups'
+        # stamps) is no longer shown beside the initial values. (A restored state sets its own stamp after this.)
+        self._stamp += 1
+        self._ns["ll_scan"] = self._stamp
 
     # ------------------------------------------------------------------ running
 
