@@ -238,6 +238,11 @@ class Expressions:
 
     def convert(self, c: ir.Convert) -> str:
         operand = self.expr(c.operand)
+        if isinstance(c.source, t.Reference):  # ``dw := pt`` (CODESYS typing): its synthetic address (addresses.py)
+            number = f"ll_addr.address({operand}, {byte_layout(c.source.target)!r})"
+            return self.standard(f"ULINT_TO_{self.scalar(c.type, 'conversion')}", [number], ("ULINT",), None)
+        if isinstance(c.type, t.Reference):  # ``pt := dw``: the variable that number lies in, or none
+            return f"ll_addr.pointer({operand}, {byte_layout(c.type.target)!r})"
         source, target = self.scalar(c.source, "conversion"), self.scalar(c.type, "conversion")
         src, dst = values.resolve(source).name, values.resolve(target).name
         if src == dst:  # subrange <-> base, enum <-> DINT, STRING[n] <-> STRING[m]
