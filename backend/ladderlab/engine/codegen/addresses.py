@@ -39,12 +39,12 @@ class AddressSpace:
         self._next = FIRST
         self._kept = 0
 
-    def address(self, ref: Ref | None, spec: tuple) -> int:
+    def address(self, ref: Ref | None, spec: tuple[Any, ...]) -> int:
         """``dw := pt``: the number of the byte ``ref`` (a pointer to values laid out as ``spec``) points to."""
         if ref is None:
             return 0
         if isinstance(ref, Stray):
-            return ref.k  # type: ignore[return-value]  # an int key
+            return int(ref.k)  # type: ignore[call-overload]  # an int key
         seen: Any = ref if isinstance(ref, ViewRef) else view(ref, spec, spec)
         if seen.k is not None and seen.c[seen.k].__class__ is list:  # ADR(arr): the array its elements' pointers see
             seen = ViewRef(
@@ -56,7 +56,7 @@ class AddressSpace:
             base = self._give(key, seen)
         return base + seen.offset
 
-    def pointer(self, number: int, spec: tuple) -> Ref | None:
+    def pointer(self, number: int, spec: tuple[Any, ...]) -> Ref | None:
         """``pt := dw``: a pointer to the byte ``number`` in the variable it lies in (one past its end included),
         seeing it as ``spec``; NULL for 0; a ``Stray`` pointer for a number in no variable."""
         if number == 0:
