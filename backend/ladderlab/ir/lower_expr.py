@@ -157,7 +157,7 @@ def _reference_to(expr: Expr, target: Reference, node: ast.Expr | None) -> Expr:
     both types have a byte layout."""
     if isinstance(expr, Const) and (expr.value is None or (expr.value == 0 and isinstance(expr.type, Elementary))):
         return Const(None, target)  # NULL, or CODESYS's 0 (the checker let it through: st/types.null_literal)
-    if isinstance(expr.type, Elementary) and t.codesys_typing():  # ``pt := dw``: the checker accepted the number
+    if isinstance(expr.type, Elementary) and t.address_number(expr.type.name):  # ``pt := dw`` (CODESYS typing)
         return Convert(expr, expr.type, addressed(target, node))
     if not isinstance(expr.type, Reference):
         raise LoweringError(f"a {_reference_text(target)} cannot refer to {_referred_text(expr.type)}", node)

@@ -267,12 +267,16 @@ def holds_address(number: Type, pointer: Type) -> bool:
     ``pt := dw``, ``pt < dw``): a POINTER TO / REF_TO (no REFERENCE TO, which stands for its target) and an
     unsigned number of ``ADDRESS_NUMBERS``."""
     return (
-        codesys_typing()
-        and isinstance(pointer, PointerType)
+        isinstance(pointer, PointerType)
         and not pointer.implicit
         and isinstance(number, Elementary)
-        and number.name in ADDRESS_NUMBERS
+        and address_number(number.name)
     )
+
+
+def address_number(name: str) -> bool:
+    """Whether the elementary type ``name`` holds a pointer's address as a number (CODESYS typing only)."""
+    return codesys_typing() and name in ADDRESS_NUMBERS
 
 
 def codesys_typing() -> bool:
