@@ -44,7 +44,8 @@ class AddressSpace:
         if ref is None:
             return 0
         if isinstance(ref, Stray):
-            return int(ref.k)  # type: ignore[call-overload]  # an int key
+            address: int = ref.k  # type: ignore[assignment]  # an int key
+            return address
         seen: Any = ref if isinstance(ref, ViewRef) else view(ref, spec, spec)
         if seen.k is not None and seen.c[seen.k].__class__ is list:  # ADR(arr): the array its elements' pointers see
             seen = ViewRef(
@@ -54,7 +55,8 @@ class AddressSpace:
         base = self._bases.get(key)
         if base is None:
             base = self._give(key, seen)
-        return base + seen.offset
+        offset: int = seen.offset
+        return base + offset
 
     def pointer(self, number: int, spec: tuple[Any, ...]) -> Ref | None:
         """``pt := dw``: a pointer to the byte ``number`` in the variable it lies in (one past its end included),
