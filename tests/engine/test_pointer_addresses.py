@@ -129,3 +129,10 @@ def test_an_address_is_a_number_under_codesys_typing_only_and_in_32_bits_or_more
         "ST-TYPE-MISMATCH 7:6 cannot assign REF_TO DINT to WORD",
         "ST-TYPE-MISMATCH 8:7 cannot assign REF_TO DINT to DINT",
     ]
+
+
+def test_a_pointer_to_what_has_no_bytes_is_no_number():
+    assert _errors("t : TIME; pt : POINTER TO TIME; dw : DWORD;", "pt := ADR(t);\ndw := pt;", "codesys") == [
+        "IR-UNSUPPORTED 7:1 a pointer as a number needs the bytes of what it points to: a TIME (its bytes in CODESYS "
+        "are not the value LadderLab keeps)"
+    ]
