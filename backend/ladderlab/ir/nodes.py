@@ -239,11 +239,14 @@ class Fit:
 @dataclass(frozen=True, slots=True)
 class AddressOf:
     """``REF(x)`` / ``ADR(x)``: a reference (``type``, a ``Reference``) to the variable ``var``; ``text`` is the
-    call as written, which the online views show as the reference's value."""
+    call as written, which the online views show as the reference's value. ``addresses``: CODESYS typing, where the
+    reference may become a number, so the engine learns which variable ``var`` is part of
+    (engine/codegen/addresses.py)."""
 
     var: Var
     type: IrType
     text: str
+    addresses: bool = False
 
 
 @quick_init

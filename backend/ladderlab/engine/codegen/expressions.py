@@ -44,6 +44,17 @@ def _atom(code: str) -> bool:
     return " " not in code and "(" not in code and _ATOM.match(code) is not None
 
 
+#: The variable an ``ADR(x...)`` / ``REF(x...)`` text starts from.
+_WRITTEN_ROOT = re.compile(r"\w+\(\s*([A-Za-z_]\w*)")
+
+
+def _holds_instances(ty: t.IrType) -> bool:
+    """An FB or program instance, or an array of them: no byte layout, its members are variables of their own."""
+    while isinstance(ty, t.Array):
+        ty = ty.element
+    return isinstance(ty, t.FbInstance)
+
+
 def _plain_read(e: ir.Expr, code: str) -> bool:
     """Whether ``e`` (emitted as ``code``) is a BOOL constant, a BOOL variable read as a plain name or attribute
     chain, or NOT of one: evaluating it has no effect and cannot fault, so it may be skipped. Indexed, dereferenced
@@ -166,8 +177,8 @@ class Expressions:
             spec = byte_layout(b.type.target)
             layout = spec if isinstance(spec, tuple) else None  # none to see: whole elements only
             return f"ll_ptr_add({left}, {offset}, {byte_size(b.type.target)}, {what!r}, {layout!r})"
-        if isinstance(b.left.type, t.Reference) and b.op in ("EQ", "NE"):  # one variable referred to, or both NULL
-            return f"({left} {'==' if b.op == 'EQ' else '!='} {right})"
+        if isinstance(b.left.type, t.Reference) and b.op in ("EQ", "NE"):  # one variable (byte: addresses.py), NULL
+            return f"({'' if b.op == 'EQ' else 'not '}ll_addr.same({left}, {right}))"
         if isinstance(b.left.type, t.Reference):  # LT ...: the bytes two pointers into one variable point to
             sizes = f"{byte_size(b.left.type.target)}, {byte_size(b.right.type.target)}"  # type: ignore[union-attr]  # both pointers (checker)
             return f"ll_ptr_order({left}, {right}, {sizes}, {_ORDERINGS[b.op]!r})"
@@ -203,12 +214,33 @@ class Expressions:
         if derefs and not calls_in(var):  # (the pointer's pair is read again: no call in the path)
             pointer = self.ref(ir.Var(var.scope, var.name, var.type, var.path[: derefs[-1] + 1]))
             return f"ll_io_ref({pointer}, *{ref}, {a.text!r})"
-        if var.scope == "local" and var.name.upper() in self.scope.framed:
-            return f"ll_FrameRef(*{ref}, {a.text!r}, ll_fr)"
+        framed = var.scope == "local" and var.name.upper() in self.scope.framed
         slot = self.scope.slots.get(var.name.upper()) if var.scope == "local" else None
         if slot is not None and slot.var_class == "VAR_IN_OUT":
             return f"ll_io_ref(r_{names.escape(slot.name)}, *{ref}, {a.text!r})"
-        return f"ll_Ref(*{ref}, {a.text!r})"
+        code = f"ll_FrameRef(*{ref}, {a.text!r}, ll_fr)" if framed else f"ll_Ref(*{ref}, {a.text!r})"
+        outer = self.outer_variable(var) if a.addresses and not derefs else None
+        if outer is None:
+            return code
+        spec = byte_layout(outer[1])  # its layout, or why it has none (its parts then have no exact address)
+        frame = "ll_fr" if framed else "None"
+        written = _WRITTEN_ROOT.match(a.text)  # the root as written (``buf``; the IR's is ``BUF``)
+        name = (written.group(1) if written else var.name) + var_text(outer[0])[len(var.name) :]
+        return f"ll_addr.part({code}, {self.ref(outer[0])}, {spec!r}, {name!r}, {frame})"
+
+    def outer_variable(self, var: ir.Var) -> tuple[ir.Var, t.IrType] | None:
+        """The outermost variable ``var`` is part of that has a byte layout or would have one (a program's, an FB
+        instance's, a FUNCTION's, a global: every variable but one inside a STRUCT or an array), and its type; None
+        when a call in the path would run again to reach it (engine/codegen/addresses.py)."""
+        _, ty = self.scope.root(var)
+        depth = 0
+        while depth < len(var.path) and _holds_instances(ty):
+            selector = var.path[depth]
+            assert not isinstance(selector, ir.Deref)  # (no dereference: the caller's check)
+            _, ty = self.select("x", ty, selector)
+            depth += 1
+        outer = ir.Var(var.scope, var.name, ty, var.path[:depth])
+        return None if calls_in(outer) else (outer, ty)
 
     def in_out_argument(self, v: ir.Var, parameter: t.IrType) -> str:
         """``ref(v)`` passed to a VAR_IN_OUT of type ``parameter``; a variable of this call that has a frame passes it
