@@ -9,11 +9,15 @@ aligned variable's address is a multiple of 4, and a number in no variable is a 
 from __future__ import annotations
 
 import functools
+import math
 
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from ladderlab.engine.codegen.views import layout
+from ladderlab.ir.byte_layout import byte_layout
+from ladderlab.ir.types import Array, Elementary, Struct, StructField
 from ladderlab.simulation.build import build_project
 from ladderlab.st.project_text import source_to_project
 from ladderlab.st.types import typing_rules
@@ -64,14 +68,14 @@ def test_an_address_as_a_number_leads_back_to_its_byte_and_bytes_are_consecutive
     assert sim.read("Main.l") == sim.read("Main.a0") + 1
     assert (sim.read("Main.step"), sim.read("Main.aligned"), sim.read("Main.lower")) == (True, True, True)
     assert sim.read("Main.nul") and sim.read("Main.pn") == "NULL"
-    assert sim.read("Main.pt") == "ADR(buf[0]) + 5"  # the online view names the variable the number lies in
+    assert sim.read("Main.pt") == "ADR(buf) + 5"  # the online view names the variable the number lies in
 
 
 #: The round trip: a pointer into a ten-byte buffer at element 2, moved by k as a pointer (q) and as a number (dw).
 _ROUND_TRIP = program(
     "buf : ARRAY[0..9] OF BYTE := [100, 101, 102, 103, 104, 105, 106, 107, 108, 109]; k : DINT;"
-    "pt, q, back : POINTER TO BYTE; dw : DWORD; direct, via : BYTE;",
-    "pt := ADR(buf[2]);\nq := pt + k;\ndw := q;\nback := dw;\nvia := back^;\ndirect := q^;",
+    "pt, q, back : POINTER TO BYTE; dw, again : DWORD; direct, via : BYTE;",
+    "pt := ADR(buf[2]);\nq := pt + k;\ndw := q;\nback := dw;\nvia := back^;\ndirect := q^;\nagain := back;",
 )
 
 
@@ -91,7 +95,8 @@ def test_a_pointer_made_from_the_number_of_pt_plus_k_reaches_the_byte_pt_plus_k_
     if 0 <= 2 + k < 10:  # inside the buffer: the same byte either way
         assert sim.fault is None, sim.fault.text()
         assert sim.read("Main.via") == sim.read("Main.direct") == 102 + k
-        assert sim.read("Main.back") == sim.read("Main.q")
+        assert sim.read("Main.back") == "ADR(buf)" + (f" + {2 + k}" if k != -2 else "")  # named from its variable
+        assert sim.read("Main.again") == sim.read("Main.dw")
     else:  # outside (one past its end included: nothing to read there) it is a located fault, never a value
         assert sim.fault is not None and sim.fault.code == "index_out_of_range"
         assert sim.fault.pou == "MAIN" and sim.fault.origin.line in (7, 10)  # q := pt + k; via := back^;
@@ -136,3 +141,263 @@ def test_a_pointer_to_what_has_no_bytes_is_no_number():
         "IR-UNSUPPORTED 7:1 a pointer as a number needs the bytes of what it points to: a TIME (its bytes in CODESYS "
         "are not the value LadderLab keeps)"
     ]
+
+
+# --- A part's address: its outermost variable's base plus its byte offset (ADR(rec.m) - ADR(rec) is m's offset).
+#
+# Random STRUCT / array nestings. The expected offsets come from CODESYS's layout rules as docs/st.md states them
+# (CODESYS's page "Attribute: pack_mode", content.helpme-codesys.com, _cds_pragma_attribute_pack_mode): a member lies
+# at the next multiple of its alignment (a number's size, 1 for BOOL and STRING[n], an array's element's, a STRUCT's
+# largest capped alignment) capped by the pack_mode; a STRUCT's size is rounded up to a multiple of its largest
+# capped alignment; an array's elements follow one another, the first dimension outermost (row-major). ``_model``
+# works them out by those rules alone; ir/byte_layout.py must agree, and so must the engine's addresses.
+
+#: Leaf types: (name, size); the numeric ones are read and written through the pointer made from a number.
+_NUMBERS = (("BYTE", 1), ("INT", 2), ("WORD", 2), ("DINT", 4), ("REAL", 4), ("LREAL", 8))
+_FILLERS = (("BOOL", 1), ("STRING[3]", 4))
+
+
+def _leaves(numeric: bool):
+    return st.sampled_from(_NUMBERS if numeric else _NUMBERS + _FILLERS).map(lambda leaf: ("leaf", *leaf))
+
+
+def _nesting(depth: int, numeric: bool, leaf: bool = True):
+    """A type whose every path ends in a leaf (``leaf`` False: no leaf itself); ``numeric``: the path ``_path``
+    takes ends in a number."""
+    if depth == 0:
+        return _leaves(numeric)
+    inner = _nesting(depth - 1, numeric)
+    dims = st.lists(st.tuples(st.integers(-1, 1), st.integers(1, 3)), min_size=1, max_size=2)
+    arrays = st.tuples(st.just("array"), dims.map(lambda ds: tuple((lo, lo + n - 1) for lo, n in ds)), inner)
+    others = st.lists(_nesting(depth - 1, False), min_size=0, max_size=3)
+    structs = st.builds(
+        lambda pack, first, rest, at: ("struct", pack, (*rest[:at], first, *rest[at:]), min(at, len(rest))),
+        st.sampled_from((None, 1, 2, 4, 8)),
+        inner,
+        others,
+        st.integers(0, 3),
+    )
+    return st.one_of(_leaves(numeric), arrays, structs) if leaf else st.one_of(arrays, structs)
+
+
+def _eight_bytes(ty) -> bool:
+    if ty[0] == "leaf":
+        return ty[2] == 8
+    return _eight_bytes(ty[2]) if ty[0] == "array" else any(_eight_bytes(m) for m in ty[2])
+
+
+def _model(ty) -> tuple[int, int]:
+    """(size, alignment) of a test type by CODESYS's rules (above); a STRUCT's pack_mode caps its members'."""
+    if ty[0] == "leaf":
+        return ty[2], 1 if ty[1].startswith(("STRING", "BOOL")) else ty[2]
+    if ty[0] == "array":
+        size, align = _model(ty[2])
+        return size * math.prod(hi - lo + 1 for lo, hi in ty[1]), align
+    end, largest = 0, 1
+    for member in ty[2]:
+        size, align = _model(member)
+        align = min(align, _pack(ty))
+        end += -end % align
+        end += size
+        largest = max(largest, align)
+    return end + -end % largest, largest
+
+
+def _pack(ty) -> int:
+    """A STRUCT's pack_mode; one holding an 8-byte number gets 8 when it has none, written out (without it the
+    target decides: docs/st.md, IR-UNSUPPORTED)."""
+    return ty[1] or (8 if _eight_bytes(ty) else 4)
+
+
+def _path(ty) -> list[tuple[str, int]]:
+    """The parts the test takes, outermost first, each as (its ST selector text, its offset by ``_model``): the
+    STRUCTs' chosen member, the last element of every array."""
+    parts, offset = [], 0
+    while ty[0] != "leaf":
+        if ty[0] == "array":
+            element, _ = _model(ty[2])
+            indices, flat = [hi for _, hi in ty[1]], 0
+            for (lo, hi), index in zip(ty[1], indices, strict=True):
+                flat = flat * (hi - lo + 1) + index - lo
+            offset += flat * element
+            parts.append(("[" + ", ".join(map(str, indices)) + "]", offset))
+            ty = ty[2]
+        else:
+            chosen, end = ty[3], 0
+            for number, member in enumerate(ty[2]):
+                size, align = _model(member)
+                end += -end % min(align, _pack(ty))
+                if number == chosen:
+                    break
+                end += size
+            offset += end
+            parts.append((f".m{chosen}", offset))
+            ty = ty[2][chosen]
+    return parts
+
+
+def _leaf(ty):
+    """The leaf ``_path`` ends in."""
+    while ty[0] != "leaf":
+        ty = ty[2] if ty[0] == "array" else ty[2][ty[3]]
+    return ty
+
+
+def _st_type(ty, types: list[str]) -> str:
+    """The ST text of a test type; its STRUCTs' TYPE declarations go to ``types``, inner ones first."""
+    if ty[0] == "leaf":
+        return ty[1]
+    if ty[0] == "array":
+        return f"ARRAY[{', '.join(f'{lo}..{hi}' for lo, hi in ty[1])}] OF {_st_type(ty[2], types)}"
+    members = " ".join(f"m{n} : {_st_type(member, types)};" for n, member in enumerate(ty[2]))
+    name = f"S{len(types)}"
+    pragma = f"{{attribute 'pack_mode' := '{_pack(ty)}'}}\n" if ty[1] or _eight_bytes(ty) else ""
+    types.append(f"{pragma}TYPE {name} : STRUCT {members} END_STRUCT; END_TYPE")
+    return name
+
+
+def _ir_type(ty):
+    """The same type as the lowering's (ir/types.py), for ir/byte_layout.py."""
+    if ty[0] == "leaf":
+        return Elementary("STRING", 3) if ty[1] == "STRING[3]" else Elementary(ty[1])
+    if ty[0] == "array":
+        return Array(_ir_type(ty[2]), ty[1])
+    fields = tuple(StructField(f"M{n}", _ir_type(member)) for n, member in enumerate(ty[2]))
+    return Struct("S", fields, _pack(ty) if ty[1] or _eight_bytes(ty) else None)
+
+
+def _spec_offsets(spec, ty) -> list[int]:
+    """The offsets ir/byte_layout.py's ``spec`` gives the parts ``_path`` takes."""
+    found, offset = [], 0
+    while ty[0] != "leaf":
+        if ty[0] == "array":
+            for lo, hi in ty[1]:  # one nesting of ("array", count, element) per dimension, the first outermost
+                spec = spec[2]
+                offset += (hi - lo) * layout(spec).size
+            ty = ty[2]
+        else:
+            _, start, spec = spec[4][ty[3]]
+            offset += start
+            ty = ty[2][ty[3]]
+        found.append(offset)
+    return found
+
+
+@settings(max_examples=30, deadline=None)
+@given(ty=_nesting(3, True, leaf=False), variant=st.sampled_from(VARIANTS))
+def test_a_parts_address_is_its_outer_variables_plus_its_byte_offset(ty, variant):
+    types: list[str] = []
+    declared = _st_type(ty, types)
+    parts = _path(ty)
+    offsets = [offset for _, offset in parts]
+    assert _spec_offsets(byte_layout(_ir_type(ty)), ty) == offsets  # ir/byte_layout.py agrees with the rules
+    leaf = _leaf(ty)
+    path = "".join(text for text, _ in parts)
+    names = [f"o{n}" for n in range(len(parts))]
+    text = program(
+        f"v : {declared}; base, n, e, f, {', '.join(names)} : DWORD; pt : POINTER TO {leaf[1]}; pb : POINTER TO BYTE;"
+        f"r, w : {leaf[1]};",
+        "base := ADR(v);\n"
+        + "".join(f"{name} := ADR(v{''.join(t for t, _ in parts[: k + 1])});\n" for k, name in enumerate(names))
+        + f"v{path} := 42;\nn := base + {offsets[-1]};\npt := n;\nr := pt^;\npt^ := 7;\nw := v{path};\n"
+        f"pb := ADR(v);\npb := pb + ({names[-1]} - base);\ne := pb;\nf := AddrOf(ADR(v{path}));",
+        "\n".join(types)
+        + f"\nFUNCTION AddrOf : DWORD\nVAR_INPUT p : POINTER TO {leaf[1]}; END_VAR\nAddrOf := p;\nEND_FUNCTION\n",
+    )
+    result = _build(text, variant=variant)
+    assert [d.format() for d in result.diagnostics if d.severity == "error"] == []
+    sim = result.simulation()
+    sim.cycle(1)
+    assert sim.fault is None, sim.fault.text()
+    base = sim.read("Main.base")
+    assert [sim.read(f"Main.{name}") - base for name in names] == offsets
+    assert (sim.read("Main.r"), sim.read("Main.w")) == (42, 7)  # pt := base + offset reached v's part, both ways
+    assert sim.read("Main.e") == sim.read("Main.f") == base + offsets[-1]  # moved from ADR(v); through a FUNCTION
+
+
+_PARTS_TYPES = """TYPE Rec : STRUCT x : BYTE; m : INT; END_STRUCT END_TYPE
+TYPE Timed : STRUCT t : TIME; arr : ARRAY[0..3] OF INT; END_STRUCT END_TYPE
+FUNCTION OfMember : DWORD
+VAR_IN_OUT io : Rec; END_VAR
+OfMember := ADR(io.m);
+END_FUNCTION
+FUNCTION_BLOCK Holder
+VAR_OUTPUT rec : Rec; inner : DWORD; END_VAR
+inner := ADR(rec.m);
+END_FUNCTION_BLOCK
+"""
+
+
+@pytest.mark.parametrize("variant", VARIANTS)
+def test_the_parts_of_an_fb_instances_variable_and_of_one_passed_in_out_lie_in_it(variant):
+    """An FB instance has no byte layout (CODESYS documents none): its variables are variables of their own, and a
+    STRUCT among them is the outermost variable of its members (Rec: x at 0, m at 2). A VAR_IN_OUT's part lies in
+    the caller's variable, known once an address in it was taken there."""
+    result = _build(
+        program(
+            "h : Holder; hs : ARRAY[0..2] OF Holder; rec : Rec; base, m, b2, m2, via, r0, io : DWORD;",
+            "h();\nbase := ADR(h.rec);\nm := ADR(h.rec.m);\nb2 := ADR(hs[1].rec);\nm2 := ADR(hs[1].rec.m);\n"
+            "via := h.inner;\nr0 := ADR(rec);\nio := OfMember(rec);",
+            _PARTS_TYPES,
+        ),
+        variant=variant,
+    )
+    sim = result.simulation()
+    sim.cycle(1)
+    assert sim.fault is None, sim.fault.text()
+    values = {name: sim.read(f"Main.{name}") for name in ("base", "m", "b2", "m2", "via", "r0", "io")}
+    assert values["m"] - values["base"] == values["m2"] - values["b2"] == values["io"] - values["r0"] == 2
+    assert values["via"] == values["m"]  # the FB's own ADR(rec.m) is the one taken from outside
+
+
+@pytest.mark.parametrize("variant", VARIANTS)
+def test_a_part_with_no_exact_address_is_a_located_fault_as_a_number(variant):
+    """A part of a STRUCT that has no byte layout (a TIME member: CODESYS's bytes are not LadderLab's value), or of
+    a variable reached through a VAR_IN_OUT whose variable had no address taken in its caller, has no exact
+    address: taking it as a number is the fault invalid_argument at its line, never a made-up number."""
+    result = _build(
+        program("tm : Timed; dw : DWORD;", "dw := 1;\ndw := ADR(tm.arr[1]);", _PARTS_TYPES), variant=variant
+    )
+    sim = result.simulation()
+    sim.cycle(1)
+    assert sim.fault is not None and (sim.fault.code, sim.fault.pou, sim.fault.origin.line) == (
+        "invalid_argument",
+        "MAIN",
+        17,
+    )
+    assert sim.fault.message == (
+        "the pointer ADR(tm.arr[1]) as a number: it points into tm, which has no byte layout, so where it lies there "
+        "is unknown: the STRUCT TIMED, whose member T is a TIME (its bytes in CODESYS are not the value LadderLab keeps)"
+    )
+    assert sim.read("Main.dw") == 1
+    sim = _build(program("rec : Rec; dw : DWORD;", "dw := OfMember(rec);", _PARTS_TYPES), variant=variant).simulation()
+    sim.cycle(1)
+    assert sim.fault is not None and (sim.fault.code, sim.fault.pou, sim.fault.origin.line) == (
+        "invalid_argument",
+        "OFMEMBER",
+        5,
+    )
+    assert sim.fault.message == (
+        "the pointer ADR(io.m) as a number: it points into a STRUCT or an array reached through a VAR_IN_OUT or a "
+        "pointer, and which variable that is part of is known only where a part's address is taken (ADR(x.m) in the "
+        "POU declaring x)"
+    )
+
+
+@pytest.mark.parametrize("variant", VARIANTS)
+def test_pointers_to_one_byte_are_equal_however_they_got_there(variant):
+    """``p = q`` compares what the pointers point to: ``ADR(rec) + 2`` is ``ADR(rec.m)`` (Rec: m at 2), and so is a
+    pointer made from ``ADR(rec.m)``'s number; ``ADR(rec) + 1`` (padding) is not."""
+    sim = _build(
+        program(
+            "rec : Rec; pb, pm, back, pad : POINTER TO BYTE; dw : DWORD; moved, made, other, differ : BOOL;",
+            "pb := ADR(rec);\npb := pb + 2;\npm := ADR(rec.m);\nmoved := pb = pm;\ndw := pm;\nback := dw;\n"
+            "made := back = pm AND back = pb;\npad := ADR(rec);\npad := pad + 1;\nother := pad = pm;\n"
+            "differ := pad <> pm AND NOT (back <> pb);",
+            _PARTS_TYPES,
+        ),
+        variant=variant,
+    ).simulation()
+    sim.cycle(1)
+    assert sim.fault is None, sim.fault.text()
+    assert [sim.read(f"Main.{name}") for name in ("moved", "made", "other", "differ")] == [True, True, False, True]
