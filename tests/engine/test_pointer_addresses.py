@@ -387,17 +387,21 @@ def test_a_part_with_no_exact_address_is_a_located_fault_as_a_number(variant):
 @pytest.mark.parametrize("variant", VARIANTS)
 def test_pointers_to_one_byte_are_equal_however_they_got_there(variant):
     """``p = q`` compares what the pointers point to: ``ADR(rec) + 2`` is ``ADR(rec.m)`` (Rec: m at 2), and so is a
-    pointer made from ``ADR(rec.m)``'s number; ``ADR(rec) + 1`` (padding) is not."""
+    pointer made from ``ADR(rec.m)``'s number; ``ADR(rec) + 1`` (padding) is not. ``p < q`` orders the bytes of one
+    variable alike: ``ADR(buf) + 3`` (moved from the whole array) lies after ``ADR(buf[1])``, at ``ADR(buf[3])``."""
     sim = _build(
         program(
-            "rec : Rec; pb, pm, back, pad : POINTER TO BYTE; dw : DWORD; moved, made, other, differ : BOOL;",
+            "rec : Rec; pb, pm, back, pad, pe : POINTER TO BYTE; dw : DWORD; buf : ARRAY[0..7] OF BYTE;"
+            "moved, made, other, differ, ordered : BOOL;",
             "pb := ADR(rec);\npb := pb + 2;\npm := ADR(rec.m);\nmoved := pb = pm;\ndw := pm;\nback := dw;\n"
             "made := back = pm AND back = pb;\npad := ADR(rec);\npad := pad + 1;\nother := pad = pm;\n"
-            "differ := pad <> pm AND NOT (back <> pb);",
+            "differ := pad <> pm AND NOT (back <> pb);\npe := ADR(buf);\npe := pe + 3;\n"
+            "ordered := pad < pm AND pb <= pm AND pe > ADR(buf[1]) AND pe >= ADR(buf[3]) AND NOT (pe < ADR(buf[3]));",
             _PARTS_TYPES,
         ),
         variant=variant,
     ).simulation()
     sim.cycle(1)
     assert sim.fault is None, sim.fault.text()
-    assert [sim.read(f"Main.{name}") for name in ("moved", "made", "other", "differ")] == [True, True, False, True]
+    names = ("moved", "made", "other", "differ", "ordered")
+    assert [sim.read(f"Main.{name}") for name in names] == [True, True, False, True, True]

@@ -25,7 +25,7 @@ import bisect
 from typing import Any
 
 from ..errors import INVALID_ARGUMENT, OUT_OF_MEMORY, PlcRuntimeError
-from .runtime import Ref, Structure, is_composite_value
+from .runtime import ORDERS, Ref, Structure, is_composite_value, pointer_order
 from .views import ArrayLayout, Stray, StructLayout, ViewRef, layout
 
 #: Every base address is a multiple of this (CODESYS aligns no variable to more than 8 bytes).
@@ -107,12 +107,27 @@ class AddressSpace:
         pointer got there (``ADR(rec.m)`` and ``ADR(rec) + 2``, a pointer made from a number)."""
         if left == right:
             return True
+        places = self._in_one_variable(left, right)
+        return places is not None and places[0] == places[1]
+
+    def order(self, left: Ref | None, right: Ref | None, left_size: int, right_size: int, op: str) -> bool:
+        """``p < q`` (``<=``, ``>``, ``>=``): the bytes two pointers into one outermost variable point to, however
+        each got there (``ADR(buf) + n`` and ``ADR(buf[i])``); else as runtime.pointer_order orders them."""
+        places = self._in_one_variable(left, right)
+        if places is not None:
+            return ORDERS[op](*places)
+        return pointer_order(left, right, left_size, right_size, op)
+
+    def _in_one_variable(self, left: Ref | None, right: Ref | None) -> tuple[int, int] | None:
+        """The bytes two pointers point to when both lie in one outermost variable an address was taken in."""
         if not self._outers or not isinstance(left, Ref) or not isinstance(right, Ref):  # NULL, no address taken
-            return False
+            return None
         if isinstance(left, Stray) or isinstance(right, Stray):
-            return False
+            return None
         here, there = self._locate(left), self._locate(right)
-        return here is not None and there is not None and here[0] is there[0] and here[1] == there[1]
+        if here is None or there is None or here[0] is not there[0]:
+            return None
+        return here[1], there[1]
 
     def _locate(self, ref: Ref) -> tuple[Outer, int] | None:
         """The outermost variable ``ref`` points into and the byte there, if known (no address is given)."""

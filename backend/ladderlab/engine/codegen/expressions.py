@@ -181,7 +181,7 @@ class Expressions:
             return f"({'' if b.op == 'EQ' else 'not '}ll_addr.same({left}, {right}))"
         if isinstance(b.left.type, t.Reference):  # LT ...: the bytes two pointers into one variable point to
             sizes = f"{byte_size(b.left.type.target)}, {byte_size(b.right.type.target)}"  # type: ignore[union-attr]  # both pointers (checker)
-            return f"ll_ptr_order({left}, {right}, {sizes}, {_ORDERINGS[b.op]!r})"
+            return f"ll_addr.order({left}, {right}, {sizes}, {_ORDERINGS[b.op]!r})"
         if b.op in _BOOL_LOGIC and b.type == t.BOOL and _plain_read(b.right, right):
             # ``x AND x`` is x: an LD contact on the coil just set (``C`` read through the local it was set from)
             return left if left == right else f"({left} {_BOOL_LOGIC[b.op]} {right})"

@@ -479,7 +479,6 @@ def namespace() -> dict[str, object]:
         ll_io_ref=in_out_ref,
         ll_deref=deref,
         ll_ptr_add=pointer_add,
-        ll_ptr_order=pointer_order,
         ll_addr=AddressSpace(),  # the simulation's synthetic addresses (a pointer as a number)
         ll_seen=view,  # (not ll_view: a monitored network's local, statements.py)
         ll_inf=math.inf,
