@@ -325,6 +325,11 @@ FUNCTION_BLOCK Holder
 VAR_OUTPUT rec : Rec; inner : DWORD; END_VAR
 inner := ADR(rec.m);
 END_FUNCTION_BLOCK
+FUNCTION_BLOCK OfHeld
+VAR_IN_OUT h : Holder; END_VAR
+VAR_OUTPUT place : DWORD; END_VAR
+place := ADR(h.rec.m);
+END_FUNCTION_BLOCK
 """
 
 
@@ -332,12 +337,12 @@ END_FUNCTION_BLOCK
 def test_the_parts_of_an_fb_instances_variable_and_of_one_passed_in_out_lie_in_it(variant):
     """An FB instance has no byte layout (CODESYS documents none): its variables are variables of their own, and a
     STRUCT among them is the outermost variable of its members (Rec: x at 0, m at 2). A VAR_IN_OUT's part lies in
-    the caller's variable, known once an address in it was taken there."""
+    the caller's variable (the caller passing it tells the engine so)."""
     result = _build(
         program(
             "h : Holder; hs : ARRAY[0..2] OF Holder; rec : Rec; base, m, b2, m2, via, r0, io : DWORD;",
             "h();\nbase := ADR(h.rec);\nm := ADR(h.rec.m);\nb2 := ADR(hs[1].rec);\nm2 := ADR(hs[1].rec.m);\n"
-            "via := h.inner;\nr0 := ADR(rec);\nio := OfMember(rec);",
+            "via := h.inner;\nio := OfMember(rec);\nr0 := ADR(rec);",
             _PARTS_TYPES,
         ),
         variant=variant,
@@ -352,36 +357,35 @@ def test_the_parts_of_an_fb_instances_variable_and_of_one_passed_in_out_lie_in_i
 
 @pytest.mark.parametrize("variant", VARIANTS)
 def test_a_part_with_no_exact_address_is_a_located_fault_as_a_number(variant):
-    """A part of a STRUCT that has no byte layout (a TIME member: CODESYS's bytes are not LadderLab's value), or of
-    a variable reached through a VAR_IN_OUT whose variable had no address taken in its caller, has no exact
-    address: taking it as a number is the fault invalid_argument at its line, never a made-up number."""
-    result = _build(
+    """A part of a STRUCT that has no byte layout (a TIME member: CODESYS's bytes are not LadderLab's value), or one
+    whose variable the engine was never told of (a STRUCT inside an FB instance passed to a VAR_IN_OUT, the FB
+    never run), has no exact address: taking it as a number is the fault invalid_argument at its line, never a
+    made-up number."""
+    sim = _build(
         program("tm : Timed; dw : DWORD;", "dw := 1;\ndw := ADR(tm.arr[1]);", _PARTS_TYPES), variant=variant
-    )
-    sim = result.simulation()
+    ).simulation()
     sim.cycle(1)
-    assert sim.fault is not None and (sim.fault.code, sim.fault.pou, sim.fault.origin.line) == (
-        "invalid_argument",
-        "MAIN",
-        17,
-    )
+    assert sim.fault is not None
+    assert (sim.fault.code, sim.fault.pou, sim.fault.origin.line) == ("invalid_argument", "MAIN", 22)
     assert sim.fault.message == (
         "the pointer ADR(tm.arr[1]) as a number: it points into tm, which has no byte layout, so where it lies there "
         "is unknown: the STRUCT TIMED, whose member T is a TIME (its bytes in CODESYS are not the value LadderLab keeps)"
     )
     assert sim.read("Main.dw") == 1
-    sim = _build(program("rec : Rec; dw : DWORD;", "dw := OfMember(rec);", _PARTS_TYPES), variant=variant).simulation()
+    sim = _build(program("h : Holder; o : OfHeld;", "o(h := h);", _PARTS_TYPES), variant=variant).simulation()
     sim.cycle(1)
-    assert sim.fault is not None and (sim.fault.code, sim.fault.pou, sim.fault.origin.line) == (
-        "invalid_argument",
-        "OFMEMBER",
-        5,
-    )
+    assert sim.fault is not None
+    assert (sim.fault.code, sim.fault.pou, sim.fault.origin.line) == ("invalid_argument", "OFHELD", 14)
     assert sim.fault.message == (
-        "the pointer ADR(io.m) as a number: it points into a STRUCT or an array reached through a VAR_IN_OUT or a "
-        "pointer, and which variable that is part of is known only where a part's address is taken (ADR(x.m) in the "
-        "POU declaring x)"
+        "the pointer ADR(h.rec.m) as a number: the STRUCT or array it points into was reached through an FB instance "
+        "passed to a VAR_IN_OUT, a pointer or a path calling a function, so which variable it is part of is unknown "
+        "here (take that variable's address where it is declared first: ADR(x))"
     )
+    sim = _build(
+        program("h : Holder; o : OfHeld; m : DWORD;", "m := ADR(h.rec.m);\no(h := h);", _PARTS_TYPES), variant=variant
+    ).simulation()
+    sim.cycle(1)
+    assert sim.fault is None and sim.read("Main.o.place") == sim.read("Main.m")  # told of h.rec first: exact
 
 
 @pytest.mark.parametrize("variant", VARIANTS)

@@ -623,7 +623,7 @@ def _reference_of(value: ast.Expr, ty: IrType, text: str, ctx: PouContext) -> Ad
     for a variable with a subrange (or an array of one), whose own type it is: the checker's loses the range, which a
     reference to the base type must then keep (``_reference_to``); ``text`` shows it."""
     var = lower_access(value, ctx)
-    return AddressOf(var, Reference(var.type) if has_checked_values(var.type) else ty, text, t.codesys_typing())
+    return AddressOf(var, Reference(var.type) if has_checked_values(var.type) else ty, text)
 
 
 def retarget(expr: Expr, target: Reference, node: ast.Expr) -> Expr:

@@ -239,14 +239,11 @@ class Fit:
 @dataclass(frozen=True, slots=True)
 class AddressOf:
     """``REF(x)`` / ``ADR(x)``: a reference (``type``, a ``Reference``) to the variable ``var``; ``text`` is the
-    call as written, which the online views show as the reference's value. ``addresses``: CODESYS typing, where the
-    reference may become a number, so the engine learns which variable ``var`` is part of
-    (engine/codegen/addresses.py)."""
+    call as written, which the online views show as the reference's value."""
 
     var: Var
     type: IrType
     text: str
-    addresses: bool = False
 
 
 @quick_init
@@ -522,6 +519,9 @@ class Program:
     mockable: bool = False
     #: named global variable list (upper case) -> its variables (upper case), which are globals: ``GVL_IO.x`` paths
     gvls: dict[str, frozenset[str]] = field(default_factory=dict)
+    #: CODESYS typing: a pointer may be taken as a number, so ADR() / REF() and VAR_IN_OUT arguments tell the engine
+    #: which variable a part belongs to (engine/codegen/addresses.py)
+    addresses: bool = False
 
     def program_instances(self) -> list[ProgramInstance]:
         """The instances to create: ``instances``, or one per PROGRAM named after it."""

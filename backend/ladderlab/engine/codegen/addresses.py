@@ -43,12 +43,13 @@ class Outer:
     its pointers are shown from (``ADR(name) + n``), the call it belongs to (``frame``, None: the simulation's) and
     its base address once one is given."""
 
-    __slots__ = ("base", "c", "frame", "k", "name", "reason", "value", "whole")
+    __slots__ = ("base", "c", "frame", "k", "name", "reason", "value", "whole", "written")
 
     def __init__(self, c: object, k: object, whole: Any, reason: str | None, name: str, frame: Any) -> None:
         self.c, self.k, self.whole, self.reason, self.name, self.frame = c, k, whole, reason, name, frame
         self.value = c[k]  # type: ignore[index]  # a container and its key, as a Ref's
         self.base: int | None = None
+        self.written = True  # its name as the program writes it (else the IR's, upper case)
 
     def alive(self) -> bool:
         return self.frame is None or self.frame.alive
@@ -66,13 +67,26 @@ class AddressSpace:
         self._next = FIRST
         self._registered = 0
 
-    def part(self, ref: Ref, pair: tuple[object, object], spec: tuple[Any, ...] | str, name: str, frame: Any) -> Ref:
-        """``ADR(x.m)`` (``ref``): its outermost variable ``x`` is ``pair``, laid out as ``spec`` (or why it has no
-        layout), named ``name``; it is linked to its parts once (again if it is another value now)."""
+    def part(
+        self,
+        ref: object,
+        pair: tuple[object, object],
+        spec: tuple[Any, ...] | str,
+        name: str,
+        frame: Any,
+        written: bool,
+    ) -> object:
+        """``ADR(x.m)`` or a VAR_IN_OUT argument ``x.m`` (``ref``, returned): its outermost variable ``x`` is
+        ``pair``, laid out as ``spec`` (or why it has no layout), named ``name`` (as ``written`` in an ADR(), else
+        the IR's upper-case name until an ADR() names it); it is linked to its parts once (again if it is another
+        value now)."""
         c, k = pair
         outer = self._outers.get((id(c), k))
         if outer is None or outer.c is not c or (outer.value is not c[k] and is_composite_value(c[k])):  # type: ignore[index]
-            self._register(c, k, spec, name, frame)
+            outer = self._register(c, k, spec, name, frame)
+            outer.written = written
+        elif written and not outer.written:
+            outer.name, outer.written = name, True
         return ref
 
     def address(self, ref: Ref | None, spec: tuple[Any, ...]) -> int:
@@ -158,9 +172,9 @@ class AddressSpace:
             return self._register(c, k, whole, _name(ref.text), frame), 0
         raise PlcRuntimeError(
             INVALID_ARGUMENT,
-            f"the pointer {ref.text} as a number: it points into a STRUCT or an array reached through a VAR_IN_OUT or "
-            "a pointer, and which variable that is part of is known only where a part's address is taken (ADR(x.m) "
-            "in the POU declaring x)",
+            f"the pointer {ref.text} as a number: the STRUCT or array it points into was reached through an FB "
+            "instance passed to a VAR_IN_OUT, a pointer or a path calling a function, so which variable it is part of "
+            "is unknown here (take that variable's address where it is declared first: ADR(x))",
         )
 
     @staticmethod

@@ -219,25 +219,35 @@ class Expressions:
         if slot is not None and slot.var_class == "VAR_IN_OUT":
             return f"ll_io_ref(r_{names.escape(slot.name)}, *{ref}, {a.text!r})"
         code = f"ll_FrameRef(*{ref}, {a.text!r}, ll_fr)" if framed else f"ll_Ref(*{ref}, {a.text!r})"
-        outer = self.outer_variable(var) if a.addresses and not derefs else None
+        written = _WRITTEN_ROOT.match(a.text)  # the root as written (``buf``; the IR's is ``BUF``)
+        return self.telling_outer(code, var, framed, written.group(1) if written else None)
+
+    def telling_outer(self, code: str, var: ir.Var, framed: bool, written: str | None) -> str:
+        """``code`` (a reference to ``var``, or its pair), under CODESYS typing telling the engine the outermost
+        variable ``var`` is part of (engine/codegen/addresses.py), named as ``written`` (its root as written; None:
+        not written, the IR's name until an ADR() names it). Not of a variable reached through a pointer or a
+        VAR_IN_OUT, whose outermost variable is the one the caller told of, if any."""
+        if not self.module.program.addresses or any(isinstance(selector, ir.Deref) for selector in var.path):
+            return code
+        slot = self.scope.slots.get(var.name.upper()) if var.scope == "local" else None
+        if slot is not None and slot.var_class == "VAR_IN_OUT":
+            return code
+        outer = self.outer_variable(var)
         if outer is None:
             return code
         spec = byte_layout(outer[1])  # its layout, or why it has none (its parts then have no exact address)
+        name = (written or var.name) + var_text(outer[0])[len(var.name) :]
         frame = "ll_fr" if framed else "None"
-        written = _WRITTEN_ROOT.match(a.text)  # the root as written (``buf``; the IR's is ``BUF``)
-        name = (written.group(1) if written else var.name) + var_text(outer[0])[len(var.name) :]
-        return f"ll_addr.part({code}, {self.ref(outer[0])}, {spec!r}, {name!r}, {frame})"
+        return f"ll_addr.part({code}, {self.ref(outer[0])}, {spec!r}, {name!r}, {frame}, {written is not None})"
 
     def outer_variable(self, var: ir.Var) -> tuple[ir.Var, t.IrType] | None:
         """The outermost variable ``var`` is part of that has a byte layout or would have one (a program's, an FB
         instance's, a FUNCTION's, a global: every variable but one inside a STRUCT or an array), and its type; None
-        when a call in the path would run again to reach it (engine/codegen/addresses.py)."""
+        when a call in the path would run again to reach it."""
         _, ty = self.scope.root(var)
         depth = 0
         while depth < len(var.path) and _holds_instances(ty):
-            selector = var.path[depth]
-            assert not isinstance(selector, ir.Deref)  # (no dereference: the caller's check)
-            _, ty = self.select("x", ty, selector)
+            _, ty = self.select("x", ty, var.path[depth])  # type: ignore[arg-type]  # no Deref (telling_outer)
             depth += 1
         outer = ir.Var(var.scope, var.name, ty, var.path[:depth])
         return None if calls_in(outer) else (outer, ty)
@@ -256,8 +266,8 @@ class Expressions:
         if specs is not None:
             text = f"the VAR_IN_OUT argument {var_text(v)}"
             ref = f"ll_FrameRef(*{code}, {text!r}, ll_fr)" if framed else f"ll_Ref(*{code}, {text!r})"
-            return f"ll_seen({ref}, {specs[0]!r}, {specs[1]!r}).pair"
-        return f"ll_Pair(*{code}, ll_fr)" if framed else code
+            return self.telling_outer(f"ll_seen({ref}, {specs[0]!r}, {specs[1]!r}).pair", v, framed, None)
+        return self.telling_outer(f"ll_Pair(*{code}, ll_fr)" if framed else code, v, framed, None)
 
     def view(self, v: ir.View) -> str:
         """A pointer seeing its target's bytes as another type (engine/codegen/views.py)."""
