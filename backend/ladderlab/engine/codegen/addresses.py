@@ -7,11 +7,12 @@ multiple of ``ALIGN``, never 0, with a gap after it so one past its end belongs 
 member, an element, a row, nested in any way) lies at that base plus the part's byte offset as ir/byte_layout.py
 lays the variable out, so ``ADR(rec.m) = ADR(rec) + offset of m`` and ``ADR(a[1, 0]) = ADR(a) + a row's size``.
 
-The engine's values do not know the variable they are part of, so ``ADR(x.m)`` tells it (``part``, emitted by
-engine/codegen/expressions.py under CODESYS typing): the STRUCTs and arrays inside ``x`` are linked to ``x`` with
-their offsets. A part of a variable whose outermost variable has no byte layout (a STRUCT with a TIME member), or
-of one reached only through a VAR_IN_OUT or a pointer whose variable never had a part's address taken, has no
-exact address: taking it as a number is the located fault ``invalid_argument``, never a made-up number.
+The engine's values do not know the variable they are part of, so ``ADR(x.m)`` and a VAR_IN_OUT argument ``x.m``
+tell it (``part``, emitted by engine/codegen/expressions.py under CODESYS typing): the STRUCTs and arrays inside
+``x`` are linked to ``x`` with their offsets. A part of a variable whose outermost variable has no byte layout (a
+STRUCT with a TIME member), or of one the engine was never told of (inside an FB instance passed to a VAR_IN_OUT),
+has no exact address: taking it as a number is the located fault ``invalid_argument``, never a made-up number.
+``p = q`` and ``p < q`` compare the bytes of one variable the same way, however each pointer got there.
 
 ``dw := pt`` is the number of the byte pt points to; ``pt := dw`` finds the variable the number lies in and points
 there, seeing its bytes as the pointer's type (a ``ViewRef`` over the outermost variable); a number in no variable
