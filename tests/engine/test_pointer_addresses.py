@@ -330,6 +330,12 @@ VAR_IN_OUT h : Holder; END_VAR
 VAR_OUTPUT place : DWORD; END_VAR
 place := ADR(h.rec.m);
 END_FUNCTION_BLOCK
+FUNCTION OfLocal : DWORD
+VAR r : Rec; base : DWORD; END_VAR
+OfLocal := OfMember(r);
+base := ADR(r);
+OfLocal := OfLocal - base;
+END_FUNCTION
 """
 
 
@@ -337,12 +343,12 @@ END_FUNCTION_BLOCK
 def test_the_parts_of_an_fb_instances_variable_and_of_one_passed_in_out_lie_in_it(variant):
     """An FB instance has no byte layout (CODESYS documents none): its variables are variables of their own, and a
     STRUCT among them is the outermost variable of its members (Rec: x at 0, m at 2). A VAR_IN_OUT's part lies in
-    the caller's variable (the caller passing it tells the engine so)."""
+    the caller's variable (the caller passing it tells the engine so), a FUNCTION's own variable's too."""
     result = _build(
         program(
-            "h : Holder; hs : ARRAY[0..2] OF Holder; rec : Rec; base, m, b2, m2, via, r0, io : DWORD;",
+            "h : Holder; hs : ARRAY[0..2] OF Holder; rec : Rec; base, m, b2, m2, via, r0, io, local : DWORD;",
             "h();\nbase := ADR(h.rec);\nm := ADR(h.rec.m);\nb2 := ADR(hs[1].rec);\nm2 := ADR(hs[1].rec.m);\n"
-            "via := h.inner;\nio := OfMember(rec);\nr0 := ADR(rec);",
+            "via := h.inner;\nio := OfMember(rec);\nr0 := ADR(rec);\nlocal := OfLocal();",
             _PARTS_TYPES,
         ),
         variant=variant,
@@ -353,6 +359,7 @@ def test_the_parts_of_an_fb_instances_variable_and_of_one_passed_in_out_lie_in_i
     values = {name: sim.read(f"Main.{name}") for name in ("base", "m", "b2", "m2", "via", "r0", "io")}
     assert values["m"] - values["base"] == values["m2"] - values["b2"] == values["io"] - values["r0"] == 2
     assert values["via"] == values["m"]  # the FB's own ADR(rec.m) is the one taken from outside
+    assert sim.read("Main.local") == 2  # a FUNCTION's own variable passed in-out
 
 
 @pytest.mark.parametrize("variant", VARIANTS)
@@ -366,7 +373,7 @@ def test_a_part_with_no_exact_address_is_a_located_fault_as_a_number(variant):
     ).simulation()
     sim.cycle(1)
     assert sim.fault is not None
-    assert (sim.fault.code, sim.fault.pou, sim.fault.origin.line) == ("invalid_argument", "MAIN", 22)
+    assert (sim.fault.code, sim.fault.pou, sim.fault.origin.line) == ("invalid_argument", "MAIN", 28)
     assert sim.fault.message == (
         "the pointer ADR(tm.arr[1]) as a number: it points into tm, which has no byte layout, so where it lies there "
         "is unknown: the STRUCT TIMED, whose member T is a TIME (its bytes in CODESYS are not the value LadderLab keeps)"

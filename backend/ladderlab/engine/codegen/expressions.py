@@ -266,8 +266,19 @@ class Expressions:
         if specs is not None:
             text = f"the VAR_IN_OUT argument {var_text(v)}"
             ref = f"ll_FrameRef(*{code}, {text!r}, ll_fr)" if framed else f"ll_Ref(*{code}, {text!r})"
-            return self.telling_outer(f"ll_seen({ref}, {specs[0]!r}, {specs[1]!r}).pair", v, framed, None)
-        return self.telling_outer(f"ll_Pair(*{code}, ll_fr)" if framed else code, v, framed, None)
+            code = f"ll_seen({ref}, {specs[0]!r}, {specs[1]!r}).pair"
+        elif framed:
+            code = f"ll_Pair(*{code}, ll_fr)"
+        if not self.module.in_outs_addressed or (self._call_local(v) and not framed):
+            return code  # no ADR() of a VAR_IN_OUT to tell; a variable of this call dies with it untold of
+        return self.telling_outer(code, v, framed, None)
+
+    def _call_local(self, v: ir.Var) -> bool:
+        """A variable of this call: a FUNCTION's own, a VAR_TEMP."""
+        if v.scope != "local":
+            return False
+        slot = self.scope.slots.get(v.name.upper())
+        return self.scope.function or (slot is not None and slot.var_class == "VAR_TEMP")
 
     def view(self, v: ir.View) -> str:
         """A pointer seeing its target's bytes as another type (engine/codegen/views.py)."""
