@@ -167,8 +167,11 @@ def _nesting(depth: int, numeric: bool, leaf: bool = True):
     if depth == 0:
         return _leaves(numeric)
     inner = _nesting(depth - 1, numeric)
-    dims = st.lists(st.tuples(st.integers(-1, 1), st.integers(1, 3)), min_size=1, max_size=2)
-    arrays = st.tuples(st.just("array"), dims.map(lambda ds: tuple((lo, lo + n - 1) for lo, n in ds)), inner)
+    sizes = st.lists(st.tuples(st.integers(-1, 1), st.integers(1, 3)), min_size=1, max_size=2)
+    dims = sizes.map(lambda ds: tuple((lo, lo + n - 1) for lo, n in ds))
+    arrays = dims.flatmap(  # (the element ``_path`` takes: an index in each dimension)
+        lambda ds: st.tuples(st.just("array"), st.just(ds), inner, st.tuples(*(st.integers(*d) for d in ds)))
+    )
     others = st.lists(_nesting(depth - 1, False), min_size=0, max_size=3)
     structs = st.builds(
         lambda pack, first, rest, at: ("struct", pack, (*rest[:at], first, *rest[at:]), min(at, len(rest))),
@@ -211,12 +214,12 @@ def _pack(ty) -> int:
 
 def _path(ty) -> list[tuple[str, int]]:
     """The parts the test takes, outermost first, each as (its ST selector text, its offset by ``_model``): the
-    STRUCTs' chosen member, the last element of every array."""
+    chosen member of each STRUCT, the chosen element of each array."""
     parts, offset = [], 0
     while ty[0] != "leaf":
         if ty[0] == "array":
             element, _ = _model(ty[2])
-            indices, flat = [hi for _, hi in ty[1]], 0
+            indices, flat = ty[3], 0
             for (lo, hi), index in zip(ty[1], indices, strict=True):
                 flat = flat * (hi - lo + 1) + index - lo
             offset += flat * element
@@ -271,9 +274,9 @@ def _spec_offsets(spec, ty) -> list[int]:
     found, offset = [], 0
     while ty[0] != "leaf":
         if ty[0] == "array":
-            for lo, hi in ty[1]:  # one nesting of ("array", count, element) per dimension, the first outermost
-                spec = spec[2]
-                offset += (hi - lo) * layout(spec).size
+            for (lo, _), index in zip(ty[1], ty[3], strict=True):  # ("array", count, element) per dimension, the
+                spec = spec[2]  # first outermost
+                offset += (index - lo) * layout(spec).size
             ty = ty[2]
         else:
             _, start, spec = spec[4][ty[3]]
@@ -286,6 +289,9 @@ def _spec_offsets(spec, ty) -> list[int]:
 @settings(max_examples=30, deadline=None)
 @given(ty=_nesting(3, True, leaf=False), variant=st.sampled_from(VARIANTS))
 def test_a_parts_address_is_its_outer_variables_plus_its_byte_offset(ty, variant):
+    """``ADR(v.part) - ADR(v)`` is the part's offset for every part along a path through random STRUCTs and arrays;
+    ``pt := ADR(v) + offset`` reads and writes the part; ``ADR(v)`` moved by the offset (TYP-43, bytes) and the
+    number a FUNCTION makes of its POINTER parameter given ``ADR(v.part)`` are that same number."""
     types: list[str] = []
     declared = _st_type(ty, types)
     parts = _path(ty)
