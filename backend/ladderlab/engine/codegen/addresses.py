@@ -83,7 +83,8 @@ class AddressSpace:
         value now)."""
         c, k = pair
         outer = self._outers.get((id(c), k))
-        if outer is None or outer.c is not c or (outer.value is not c[k] and is_composite_value(c[k])):  # type: ignore[index]
+        value = c[k]  # type: ignore[index]  # a container and its key, as a Ref's
+        if outer is None or outer.c is not c or (outer.value is not value and is_composite_value(value)):
             outer = self._register(c, k, spec, name, frame)
             outer.written = written
         elif written and not outer.written:
