@@ -110,6 +110,12 @@ def pointer_outside_bytes(what: str, offset: int, size: int, whole: int) -> PlcR
     return PlcRuntimeError(INDEX_RANGE, f"{what} reaches {reach} of a {whole}-byte variable: outside it")
 
 
+def pointer_nowhere(what: str, address: int) -> PlcRuntimeError:
+    """Reading or writing through a pointer made from a number (CODESYS typing: ``pt := dw``) that lies in no
+    variable (engine/codegen/addresses.py)."""
+    return PlcRuntimeError(INDEX_RANGE, f"{what} reaches the address {address}, which lies in no variable")
+
+
 def pointers_unordered(op: str, left: str, right: str) -> PlcRuntimeError:
     """``p < q`` with pointers into different variables (or NULL): LadderLab's variables have no addresses to order."""
     return PlcRuntimeError(

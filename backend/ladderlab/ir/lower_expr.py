@@ -37,7 +37,7 @@ from ..st.methods import is_self, is_super
 from ..st.printer import print_expression
 from ..st.rules import EnumValue
 from ..st.symbols import PouInfo, PropertyRef, Symbol
-from .byte_layout import has_checked_values, same_target, view_specs
+from .byte_layout import byte_layout, has_checked_values, same_target, view_specs
 from .codesys_dates import in_seconds
 from .context import PouContext
 from .lower_types import LoweringError, byte_size, engine_value, ir_default
@@ -157,6 +157,8 @@ def _reference_to(expr: Expr, target: Reference, node: ast.Expr | None) -> Expr:
     both types have a byte layout."""
     if isinstance(expr, Const) and (expr.value is None or (expr.value == 0 and isinstance(expr.type, Elementary))):
         return Const(None, target)  # NULL, or CODESYS's 0 (the checker let it through: st/types.null_literal)
+    if isinstance(expr.type, Elementary) and t.address_number(expr.type.name):  # ``pt := dw`` (CODESYS typing)
+        return Convert(expr, expr.type, addressed(target, node))
     if not isinstance(expr.type, Reference):
         raise LoweringError(f"a {_reference_text(target)} cannot refer to {_referred_text(expr.type)}", node)
     instances = isinstance(expr.type.target, FbInstance) and isinstance(target.target, FbInstance)
@@ -183,6 +185,8 @@ def convert(expr: Expr, target: IrType) -> Expr:
     source = expr.type
     if source is target:  # the common case: lowered types are mostly shared instances
         return expr
+    if isinstance(source, Reference) and isinstance(target, Elementary):  # ``dw := pt`` (CODESYS typing, checked)
+        return Convert(expr, addressed(source, None), target)
     if (
         isinstance(source, Elementary | Subrange)
         and isinstance(target, Elementary | Subrange)
@@ -196,6 +200,15 @@ def convert(expr: Expr, target: IrType) -> Expr:
     ):
         return _reference_to(expr, target, None)
     return expr
+
+
+def addressed(pointer: Reference, node: ast.Expr | None) -> Reference:
+    """``pointer``, whose address is taken as a number or resolved from one: its target needs a byte layout, as the
+    engine sees the variable an address lies in through its bytes (engine/codegen/addresses.py)."""
+    reason = byte_layout(pointer.target)
+    if isinstance(reason, str):
+        raise LoweringError(f"a pointer as a number needs the bytes of what it points to: {reason}", node)
+    return pointer
 
 
 def value_type(ty: IrType) -> IrType:
@@ -508,6 +521,10 @@ def _reference_operation(node: ast.Binary, op: str, ctx: PouContext) -> Expr:
         return Binary(op, pointer, offset, pointer.type)  # type: ignore[arg-type]  # a Reference is a value type here
     if op in ("ADD", "SUB"):
         raise LoweringError(POINTER_ARITHMETIC, node)
+    if t.holds_address(node.left.ty, node.right.ty) or t.holds_address(node.right.ty, node.left.ty):
+        number = node.left.ty if isinstance(node.right.ty, t.PointerType) else node.right.ty
+        operand = ctx.ir_type(number)  # CODESYS typing: the pointer's address compared with the number
+        return Binary(op, lower_to(node.left, ctx, operand), lower_to(node.right, ctx, operand), BOOL)  # type: ignore[arg-type]
     if op not in ("EQ", "NE"):
         if not (isinstance(node.left.ty, t.PointerType) and isinstance(node.right.ty, t.PointerType)):
             raise LoweringError(f"'{node.op}' orders two pointers, not a pointer and a number", node)

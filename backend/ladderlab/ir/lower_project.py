@@ -97,6 +97,7 @@ def _lower_typed_project(project: Project, checked: CheckResult | None) -> Lower
     program.fb_inits = method_chains(checked, "FB_INIT")
     program.fb_exits = method_chains(checked, "FB_EXIT")
     program.gvls = {key: frozenset(gvl.members) for key, gvl in checked.gvls.items()}
+    program.addresses = st_types.codesys_typing()
     program.base_bodies = frozenset(
         info.base.name.upper() for info in checked.pous.values() if info.runs_base_body and info.base is not None
     )

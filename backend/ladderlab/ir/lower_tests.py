@@ -129,6 +129,7 @@ def lower_test_file(project: Project, text: str, file: str) -> TestProgram:
         fb_exits=lowered.program.fb_exits,
         mockable=True,
         gvls=lowered.program.gvls,
+        addresses=lowered.program.addresses,
     )
     return TestProgram(program, builder.tests, builder.sites, list(builder.stubs), diagnostics)
 

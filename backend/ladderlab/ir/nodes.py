@@ -519,6 +519,9 @@ class Program:
     mockable: bool = False
     #: named global variable list (upper case) -> its variables (upper case), which are globals: ``GVL_IO.x`` paths
     gvls: dict[str, frozenset[str]] = field(default_factory=dict)
+    #: CODESYS typing: a pointer may be taken as a number, so ADR() / REF() and VAR_IN_OUT arguments tell the engine
+    #: which variable a part belongs to (engine/codegen/addresses.py)
+    addresses: bool = False
 
     def program_instances(self) -> list[ProgramInstance]:
         """The instances to create: ``instances``, or one per PROGRAM named after it."""

@@ -419,6 +419,8 @@ class BodyChecker:
             return left  # pointer arithmetic in bytes (TYP-43; CODESYS: also by a bit string)
         if op in ("=", "<>") and reference_comparison(left, right):
             return t.BOOL
+        if op in _COMPARISON and (t.holds_address(left, right) or t.holds_address(right, left)):
+            return t.BOOL  # CODESYS typing: the pointer's address compared with the number
         if op == "+" and isinstance(left, t.StringType) and isinstance(right, t.StringType):
             return left  # FUN-82 (Mosaic): '+' concatenates
         combined, verdict = t.common(left, right)

@@ -256,6 +256,29 @@ def moves_a_pointer(t: Type) -> bool:
     return in_family(t, "ANY_INT") or category(t) == "bits"
 
 
+#: The numbers that hold a pointer's address under CODESYS typing: the unsigned ones of at least the 32 bits of the
+#: target LadderLab computes as (SIZEOF of a pointer is 4, ir/byte_layout.py), as CODESYS assigns a POINTER to and
+#: from a DWORD on a 32-bit target (an LWORD holds it too); a narrower or signed one would cut or sign it.
+ADDRESS_NUMBERS = frozenset({"DWORD", "LWORD", "UDINT", "ULINT"})
+
+
+def holds_address(number: Type, pointer: Type) -> bool:
+    """CODESYS typing: whether ``number`` and ``pointer`` meet as an address and a pointer (``dw := pt``,
+    ``pt := dw``, ``pt < dw``): a POINTER TO / REF_TO (no REFERENCE TO, which stands for its target) and an
+    unsigned number of ``ADDRESS_NUMBERS``."""
+    return (
+        isinstance(pointer, PointerType)
+        and not pointer.implicit
+        and isinstance(number, Elementary)
+        and address_number(number.name)
+    )
+
+
+def address_number(name: str) -> bool:
+    """Whether the elementary type ``name`` holds a pointer's address as a number (CODESYS typing only)."""
+    return codesys_typing() and name in ADDRESS_NUMBERS
+
+
 def codesys_typing() -> bool:
     """Whether the project being checked uses CODESYS V3's type rules."""
     return _TYPING.get() == "codesys"
@@ -368,6 +391,8 @@ def assignable(target: Type, source: Type) -> str | None:
         return None if takes_literal(target, source) and literal_fits(target, source.value) else "error"
     if isinstance(target, Elementary) and isinstance(source, Elementary) and _widens(source, target):
         return "widen"
+    if holds_address(target, source) or holds_address(source, target):
+        return None  # an address as a number and back (docs/st.md, "A pointer as a number")
     if isinstance(target, PointerType) and isinstance(source, PointerType):
         if isinstance(target.target, FbType) and isinstance(source.target, FbType):  # no bytes to see: up the tree
             return None if derived(target.target, source.target) else "error"

@@ -44,6 +44,17 @@ def _atom(code: str) -> bool:
     return " " not in code and "(" not in code and _ATOM.match(code) is not None
 
 
+#: The variable an ``ADR(x...)`` / ``REF(x...)`` text starts from.
+_WRITTEN_ROOT = re.compile(r"\w+\(\s*([A-Za-z_]\w*)")
+
+
+def _holds_instances(ty: t.IrType) -> bool:
+    """An FB or program instance, or an array of them: no byte layout, its members are variables of their own."""
+    while isinstance(ty, t.Array):
+        ty = ty.element
+    return isinstance(ty, t.FbInstance)
+
+
 def _plain_read(e: ir.Expr, code: str) -> bool:
     """Whether ``e`` (emitted as ``code``) is a BOOL constant, a BOOL variable read as a plain name or attribute
     chain, or NOT of one: evaluating it has no effect and cannot fault, so it may be skipped. Indexed, dereferenced
@@ -166,11 +177,11 @@ class Expressions:
             spec = byte_layout(b.type.target)
             layout = spec if isinstance(spec, tuple) else None  # none to see: whole elements only
             return f"ll_ptr_add({left}, {offset}, {byte_size(b.type.target)}, {what!r}, {layout!r})"
-        if isinstance(b.left.type, t.Reference) and b.op in ("EQ", "NE"):  # one variable referred to, or both NULL
-            return f"({left} {'==' if b.op == 'EQ' else '!='} {right})"
+        if isinstance(b.left.type, t.Reference) and b.op in ("EQ", "NE"):  # one variable (byte: addresses.py), NULL
+            return f"({'' if b.op == 'EQ' else 'not '}ll_addr.same({left}, {right}))"
         if isinstance(b.left.type, t.Reference):  # LT ...: the bytes two pointers into one variable point to
             sizes = f"{byte_size(b.left.type.target)}, {byte_size(b.right.type.target)}"  # type: ignore[union-attr]  # both pointers (checker)
-            return f"ll_ptr_order({left}, {right}, {sizes}, {_ORDERINGS[b.op]!r})"
+            return f"ll_addr.order({left}, {right}, {sizes}, {_ORDERINGS[b.op]!r})"
         if b.op in _BOOL_LOGIC and b.type == t.BOOL and _plain_read(b.right, right):
             # ``x AND x`` is x: an LD contact on the coil just set (``C`` read through the local it was set from)
             return left if left == right else f"({left} {_BOOL_LOGIC[b.op]} {right})"
@@ -203,12 +214,43 @@ class Expressions:
         if derefs and not calls_in(var):  # (the pointer's pair is read again: no call in the path)
             pointer = self.ref(ir.Var(var.scope, var.name, var.type, var.path[: derefs[-1] + 1]))
             return f"ll_io_ref({pointer}, *{ref}, {a.text!r})"
-        if var.scope == "local" and var.name.upper() in self.scope.framed:
-            return f"ll_FrameRef(*{ref}, {a.text!r}, ll_fr)"
+        framed = var.scope == "local" and var.name.upper() in self.scope.framed
         slot = self.scope.slots.get(var.name.upper()) if var.scope == "local" else None
         if slot is not None and slot.var_class == "VAR_IN_OUT":
             return f"ll_io_ref(r_{names.escape(slot.name)}, *{ref}, {a.text!r})"
-        return f"ll_Ref(*{ref}, {a.text!r})"
+        code = f"ll_FrameRef(*{ref}, {a.text!r}, ll_fr)" if framed else f"ll_Ref(*{ref}, {a.text!r})"
+        written = _WRITTEN_ROOT.match(a.text)  # the root as written (``buf``; the IR's is ``BUF``)
+        return self.telling_outer(code, var, framed, written.group(1) if written else None)
+
+    def telling_outer(self, code: str, var: ir.Var, framed: bool, written: str | None) -> str:
+        """``code`` (a reference to ``var``, or its pair), under CODESYS typing telling the engine the outermost
+        variable ``var`` is part of (engine/codegen/addresses.py), named as ``written`` (its root as written; None:
+        not written, the IR's name until an ADR() names it). Not of a variable reached through a pointer or a
+        VAR_IN_OUT, whose outermost variable is the one the caller told of, if any."""
+        if not self.module.program.addresses or any(isinstance(selector, ir.Deref) for selector in var.path):
+            return code
+        slot = self.scope.slots.get(var.name.upper()) if var.scope == "local" else None
+        if slot is not None and slot.var_class == "VAR_IN_OUT":
+            return code
+        outer = self.outer_variable(var)
+        if outer is None:
+            return code
+        spec = byte_layout(outer[1])  # its layout, or why it has none (its parts then have no exact address)
+        name = (written or var.name) + var_text(outer[0])[len(var.name) :]
+        frame = "ll_fr" if framed else "None"
+        return f"ll_addr.part({code}, {self.ref(outer[0])}, {spec!r}, {name!r}, {frame}, {written is not None})"
+
+    def outer_variable(self, var: ir.Var) -> tuple[ir.Var, t.IrType] | None:
+        """The outermost variable ``var`` is part of that has a byte layout or would have one (a program's, an FB
+        instance's, a FUNCTION's, a global: every variable but one inside a STRUCT or an array), and its type; None
+        when a call in the path would run again to reach it."""
+        _, ty = self.scope.root(var)
+        depth = 0
+        while depth < len(var.path) and _holds_instances(ty):
+            _, ty = self.select("x", ty, var.path[depth])  # type: ignore[arg-type]  # no Deref (telling_outer)
+            depth += 1
+        outer = ir.Var(var.scope, var.name, ty, var.path[:depth])
+        return None if calls_in(outer) else (outer, ty)
 
     def in_out_argument(self, v: ir.Var, parameter: t.IrType) -> str:
         """``ref(v)`` passed to a VAR_IN_OUT of type ``parameter``; a variable of this call that has a frame passes it
@@ -224,8 +266,19 @@ class Expressions:
         if specs is not None:
             text = f"the VAR_IN_OUT argument {var_text(v)}"
             ref = f"ll_FrameRef(*{code}, {text!r}, ll_fr)" if framed else f"ll_Ref(*{code}, {text!r})"
-            return f"ll_seen({ref}, {specs[0]!r}, {specs[1]!r}).pair"
-        return f"ll_Pair(*{code}, ll_fr)" if framed else code
+            code = f"ll_seen({ref}, {specs[0]!r}, {specs[1]!r}).pair"
+        elif framed:
+            code = f"ll_Pair(*{code}, ll_fr)"
+        if not self.module.in_outs_addressed or (self._call_local(v) and not framed):
+            return code  # no ADR() of a VAR_IN_OUT to tell; a variable of this call dies with it untold of
+        return self.telling_outer(code, v, framed, None)
+
+    def _call_local(self, v: ir.Var) -> bool:
+        """A variable of this call: a FUNCTION's own, a VAR_TEMP."""
+        if v.scope != "local":
+            return False
+        slot = self.scope.slots.get(v.name.upper())
+        return self.scope.function or (slot is not None and slot.var_class == "VAR_TEMP")
 
     def view(self, v: ir.View) -> str:
         """A pointer seeing its target's bytes as another type (engine/codegen/views.py)."""
@@ -238,6 +291,11 @@ class Expressions:
 
     def convert(self, c: ir.Convert) -> str:
         operand = self.expr(c.operand)
+        if isinstance(c.source, t.Reference):  # ``dw := pt`` (CODESYS typing): its synthetic address (addresses.py)
+            number = f"ll_addr.address({operand}, {byte_layout(c.source.target)!r})"
+            return self.standard(f"ULINT_TO_{self.scalar(c.type, 'conversion')}", [number], ("ULINT",), None)
+        if isinstance(c.type, t.Reference):  # ``pt := dw``: the variable that number lies in, or none
+            return f"ll_addr.pointer({operand}, {byte_layout(c.type.target)!r})"
         source, target = self.scalar(c.source, "conversion"), self.scalar(c.type, "conversion")
         src, dst = values.resolve(source).name, values.resolve(target).name
         if src == dst:  # subrange <-> base, enum <-> DINT, STRING[n] <-> STRING[m]

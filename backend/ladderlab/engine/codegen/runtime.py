@@ -457,6 +457,7 @@ FB_CLASSES: dict[str, type] = _addressable_fbs()
 
 def namespace() -> dict[str, object]:
     """Fresh globals for executing one generated module."""
+    from .addresses import AddressSpace  # (as views: it imports this module)
     from .views import pointer_add, view  # views.ViewRef derives from Ref: it imports this module
 
     ns: dict[str, object] = dict(INLINE_NAMES)
@@ -478,7 +479,7 @@ def namespace() -> dict[str, object]:
         ll_io_ref=in_out_ref,
         ll_deref=deref,
         ll_ptr_add=pointer_add,
-        ll_ptr_order=pointer_order,
+        ll_addr=AddressSpace(),  # the simulation's synthetic addresses (a pointer as a number)
         ll_seen=view,  # (not ll_view: a monitored network's local, statements.py)
         ll_inf=math.inf,
         ll_nan=math.nan,

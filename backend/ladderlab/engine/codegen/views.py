@@ -29,6 +29,7 @@ from ..errors import (
     check_member,
     check_subrange,
     null_dereference,
+    pointer_nowhere,
     pointer_outside_bytes,
 )
 from . import names
@@ -492,11 +493,48 @@ def _copy_class(seen: StructLayout) -> type[Structure]:
     return type(f"Seen_{seen.name}", (Structure,), {"__slots__": fields, "ll_fields": fields})
 
 
-def view(ref: Ref | None, whole: tuple, seen: tuple) -> ViewRef | None:
+class Stray(Ref):
+    """A pointer made from a number that lies in no variable (engine/codegen/addresses.py): it may be moved and
+    compared, not read or written through (the located fault ``pointer_nowhere``, never a Python error)."""
+
+    __slots__ = ()
+
+    def __init__(self, address: int) -> None:
+        super().__init__(None, address, f"16#{address:X}")
+
+    def _fault(self) -> PlcRuntimeError:
+        return pointer_nowhere(f"the pointer {self.text}", self.k)  # type: ignore[arg-type]  # an int key
+
+    @property
+    def v(self) -> object:
+        raise self._fault()
+
+    @v.setter
+    def v(self, value: object) -> None:
+        raise self._fault()
+
+    @property
+    def pair(self) -> tuple[object, object]:
+        raise self._fault()
+
+    def place(self, size: int) -> tuple[object, int]:
+        return None, self.k  # type: ignore[return-value]  # orders with no variable's pointer (runtime.pointer_order)
+
+    def shifted(self, offset: int, size: int, what: str) -> Stray:
+        return Stray(self.k + offset)  # type: ignore[operator]  # an int key
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Stray) and other.k == self.k
+
+    def __hash__(self) -> int:
+        return hash(self.k)
+
+
+def view(ref: Ref | None, whole: tuple, seen: tuple) -> ViewRef | Stray | None:
     """``ref`` (a pointer to a value laid out as ``whole``) seen as a pointer to ``seen``. A pointer to an array
     element sees the whole (innermost) array from that element on, so it may walk to its neighbours."""
-    if ref is None:
-        return None
+    if ref is None or isinstance(ref, Stray):
+        return ref
     seen_layout = layout(seen)
     if isinstance(ref, ViewRef):
         return ViewRef(ref.c, ref.k, ref.whole, ref.offset, seen_layout, ref.origin, ref.frame, ref.start)
@@ -519,6 +557,6 @@ def pointer_add(ref: Ref | None, offset: int, size: int, what: str, spec: tuple 
     if ref is None:
         raise null_dereference(what)
     in_array = isinstance(ref.c, list) and isinstance(ref.k, int)
-    if spec is None or isinstance(ref, ViewRef) or offset == 0 or (in_array and offset % size == 0):
+    if spec is None or isinstance(ref, ViewRef | Stray) or offset == 0 or (in_array and offset % size == 0):
         return ref.shifted(offset, size, what)
     return view(ref, spec, spec).shifted(offset, size, what)  # type: ignore[union-attr]  # ref is no NULL
