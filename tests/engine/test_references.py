@@ -100,6 +100,22 @@ def test_references_to_a_constant_and_retain_references_are_located_errors():
     ]
 
 
+def test_a_reference_to_another_programs_output_follows_it_scan_by_scan():
+    """ADR and REF of another program's variable (`Other.o`) refer to it: a program's variables live as long as
+    the application (CODESYS: `ADR(PLC_PRG.x)`), unlike a FUNCTION's result, which the check refuses. Other runs
+    first in the task, so Main reads the value Other just wrote: 3 + scans."""
+    result = build(
+        "PROGRAM Other\nVAR_OUTPUT o : INT := 3; END_VAR\no := o + 1;\nEND_PROGRAM\n"
+        "PROGRAM Main\nVAR p : POINTER TO INT; r : REF_TO INT; y, z : INT; END_VAR\n"
+        "p := ADR(Other.o); r := REF(Other.o); y := p^; z := r^ * 10;\nEND_PROGRAM\n"
+    )
+    assert [d.format() for d in result.diagnostics if d.severity == "error"] == []
+    sim = result.simulation()
+    for scan in range(1, 4):
+        sim.cycle(1)
+        assert (sim.read("Main.y"), sim.read("Main.z")) == (3 + scan, (3 + scan) * 10)
+
+
 def test_a_state_with_references_pickles_and_restores_into_another_simulation():
     """A captured reference is not carried (it holds the simulation's objects): restoring starts it as declared,
     on the target simulation's own variable; one the body sets is set again by the next scan."""

@@ -496,7 +496,7 @@ def unreferable(checker: Any, value: ast.Expr) -> str | None:
     while isinstance(root, (ast.Member, ast.Index)):
         root = root.base
     own_function = checker.pou is not None and checker.pou.kind == "FUNCTION"
-    if isinstance(root, ast.Name) and isinstance(root.ref, PouInfo):
+    if isinstance(root, ast.Name) and isinstance(root.ref, PouInfo) and root.ref.kind == "FUNCTION":
         if own_function and root.ref.name.upper() == checker.pou.name.upper():
             return None  # the function's own result variable
         return f"the result of the function {root.ref.name}: it lives only while the call runs"
