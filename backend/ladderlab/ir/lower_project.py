@@ -96,7 +96,7 @@ def _lower_typed_project(project: Project, checked: CheckResult | None) -> Lower
     program.dispatch = dispatch_tables(checked)
     program.fb_inits = method_chains(checked, "FB_INIT")
     program.fb_exits = method_chains(checked, "FB_EXIT")
-    program.gvls = {key: frozenset(gvl.members) for key, gvl in checked.gvls.items()}
+    program.gvls = {key: {k: s.name.upper() for k, s in gvl.members.items()} for key, gvl in checked.gvls.items()}
     program.base_bodies = frozenset(
         info.base.name.upper() for info in checked.pous.values() if info.runs_base_body and info.base is not None
     )

@@ -517,8 +517,9 @@ class Program:
     #: FB instances may be mocked (a unit test program, engine/doubles.py swaps an instance's class): the standard
     #: FB bodies pasted in place of their calls are guarded by the instance's class
     mockable: bool = False
-    #: named global variable list (upper case) -> its variables (upper case), which are globals: ``GVL_IO.x`` paths
-    gvls: dict[str, frozenset[str]] = field(default_factory=dict)
+    #: named global variable list (upper case) -> its variables (upper case) -> the global each is (its own name, or
+    #: ``LIST.X`` when lists share the name): ``GVL_IO.x`` paths
+    gvls: dict[str, dict[str, str]] = field(default_factory=dict)
 
     def program_instances(self) -> list[ProgramInstance]:
         """The instances to create: ``instances``, or one per PROGRAM named after it."""

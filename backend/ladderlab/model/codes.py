@@ -100,7 +100,12 @@ _TABLE: list[tuple[str, str, Severity, str]] = [
         "Control code calls a plant or its method or property (plants run in the plant task, never called).",
     ),
     ("st", "ST-CALL-ARGS", "error", "The arguments of a call do not match its parameters."),
-    ("st", "ST-AMBIGUOUS", "error", "An enumeration value belongs to several enumerations."),
+    (
+        "st",
+        "ST-AMBIGUOUS",
+        "error",
+        "A name is a value of several enumerations or a variable of several global variable lists.",
+    ),
     (
         "st",
         "ST-QUALIFIED-ONLY",

@@ -157,8 +157,8 @@ class PropertyRef:
 
 @dataclass(eq=False)
 class GvlInfo:
-    """A named global variable list (``Project.gvls``): its variables, which are also in ``CheckResult.globals``
-    (one global storage: a name is declared by one list only)."""
+    """A named global variable list (``Project.gvls``): its variables by their own (upper-case) names, which are also
+    in ``CheckResult.globals``: under the same name, or as ``LIST.X`` when another list declares the name too."""
 
     name: str
     qualified_only: bool
@@ -173,7 +173,9 @@ class CheckResult:
     pous: dict[str, PouInfo] = field(default_factory=dict)
     interfaces: dict[str, PouInfo] = field(default_factory=dict)  # INTERFACEs (kind INTERFACE) by upper-case name
     gvls: dict[str, GvlInfo] = field(default_factory=dict)  # named global variable lists by upper-case name
-    listed: dict[str, GvlInfo] = field(default_factory=dict)  # a GVL's variable (upper case) -> its list
+    listed: dict[str, GvlInfo] = field(default_factory=dict)  # a GVL's variable (its globals key) -> its list
+    #: a name declared in several lists (upper case) -> those lists: each keeps its variable as ``LIST.X``
+    shared: dict[str, list[GvlInfo]] = field(default_factory=dict)
     configuration: Any = None  # configuration.ConfigurationInfo: the instances and tasks the project runs
 
     @property

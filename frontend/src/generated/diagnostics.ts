@@ -1168,10 +1168,12 @@ export const DIAGNOSTICS = {
       area: "st",
       example: "IF state = Idle THEN",
       example_language: "st",
-      example_note: "with `Idle` a value of two enumerations.",
-      fix: "name the enumeration: `state = Mode#Idle`.",
+      example_note:
+        "with `Idle` a value of two enumerations; or `state` a variable of the global variable lists `GVL_A` and `GVL_B`.",
+      fix: "name the enumeration: `state = Mode#Idle`; or the list, as CODESYS requires (its C0136): `GVL_A.state`.",
       severity: "error",
-      summary: "An enumeration value belongs to several enumerations.",
+      summary:
+        "A name is a value of several enumerations or a variable of several global variable lists.",
     },
     "ST-CALL-ARGS": {
       anchor: "st-call-args",
