@@ -14,6 +14,7 @@ import pytest
 from ladderlab.engine.paths import UnknownPath
 from ladderlab.model import GlobalVariableList, Pou, Project, Task
 from ladderlab.simulation.build import build_project
+from ladderlab.simulation.xref import cross_reference
 from tests.ir.diagram_support import coil, contact, fbd_pou, inp, ld_pou, net, out, rung
 from tests.sfc.support import jump, sfc_pou, step, tr
 
@@ -156,3 +157,14 @@ def test_online_paths_write_and_force_each_lists_variable_and_refuse_the_bare_na
     with pytest.raises(UnknownPath) as refused:
         sim.read("x")
     assert str(refused.value) == "x is declared in several global variable lists: write GVL_A.X or GVL_B.X"
+
+
+def test_the_cross_reference_list_names_each_lists_variable_apart():
+    listed = {
+        e.name: [(a.kind, a.gvl, a.pou, a.line) for a in e.accesses]
+        for e in cross_reference(project(st("GVL_B.x := GVL_A.x;"))).entries
+        if e.pou is None
+    }
+    assert listed["GVL_A.x"] == [("declared", "GVL_A", None, 2), ("read", None, "Main", 1)]
+    assert listed["GVL_B.x"] == [("declared", "GVL_B", None, 2), ("write", None, "Main", 1)]
+    assert listed["t"] == [("declared", "GVL_A", None, 4)]  # in one list only: its own name
