@@ -514,6 +514,8 @@ class Program:
     fb_inits: dict[str, list[str]] = field(default_factory=dict)
     #: FB -> the FB_exit methods its instances run before a restart, base first (ir/fb_init.py reverses them)
     fb_exits: dict[str, list[str]] = field(default_factory=dict)
+    #: FB -> the methods its instances call after FB_init and the declaration's values (call_after_init), base first
+    after_inits: dict[str, list[str]] = field(default_factory=dict)
     #: FB instances may be mocked (a unit test program, engine/doubles.py swaps an instance's class): the standard
     #: FB bodies pasted in place of their calls are guarded by the instance's class
     mockable: bool = False

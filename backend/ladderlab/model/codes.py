@@ -128,7 +128,7 @@ _TABLE: list[tuple[str, str, Severity, str]] = [
     ("st", "ST-CASE-OVERLAP", "warning", "Two CASE labels overlap: only the first branch ever runs."),
     ("st", "ST-NO-EFFECT", "error", "A statement computes a value and does nothing with it."),
     ("st", "ST-NO-RESULT", "warning", "A function never assigns its result."),
-    ("st", "ST-PRAGMA", "warning", "A pragma stands where it has no effect."),
+    ("st", "ST-PRAGMA", "warning", "A pragma stands where it has no effect (call_after_init: an error)."),
     # both diagram languages (ir/diagram_*.py), as LD-... and FBD-...
     ("diagram", "MISSING-OPERAND", "error", "An element has no operand."),
     ("diagram", "NOT-BOOL", "error", "An element that carries power or a BOOL value is given another type."),

@@ -22,6 +22,7 @@ from ..model.project import Project
 from . import ast
 from . import types as t
 from .body import BodyChecker
+from .call_after_init import check_call_after_init
 from .configuration import check_configuration, configuration_globals
 from .fb_init import (
     check_fb_init_methods,
@@ -157,6 +158,7 @@ class ProjectChecker:
             info = self.result.pous.get(pou.name.upper())
             if (pou.methods or pou.properties or pou.actions) and info is not None and info.name == pou.name:
                 methods += declare_methods(self, info, pou.methods, pou.properties, pou.actions)
+        check_call_after_init(self.result, self.project)
         blocks = [info for info in self.result.pous.values() if info.kind == "FUNCTION_BLOCK"]
         check_overrides(self, blocks)
         check_implementations(self, blocks)

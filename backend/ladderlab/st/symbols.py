@@ -75,6 +75,8 @@ class PouInfo:
     interfaces: list[PouInfo] = field(default_factory=list)  # an FB: those it IMPLEMENTS; an INTERFACE: it EXTENDS
     methods_called: list[tuple[PouInfo, bool]] = field(default_factory=list)  # METHODs it calls, dispatched or not
     runs_base_body: bool = False  # a function block whose body or a method calls SUPER^(): runs its base's body
+    #: CODESYS's {attribute 'call_after_init'} on a function block or on its method (st/call_after_init.py)
+    after_init: bool = False
     #: the FB bodies its code runs (``SUPER^()``: the base's; ``THIS^()`` in a method: dispatched, the instance's own
     #: class's) with the call, for POU-02 (methods.check_method_recursion)
     bodies_called: list[tuple[PouInfo, bool, Any]] = field(default_factory=list)
