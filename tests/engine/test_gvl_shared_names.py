@@ -168,3 +168,11 @@ def test_the_cross_reference_list_names_each_lists_variable_apart():
     assert listed["GVL_A.x"] == [("declared", "GVL_A", None, 2), ("read", None, "Main", 1)]
     assert listed["GVL_B.x"] == [("declared", "GVL_B", None, 2), ("write", None, "Main", 1)]
     assert listed["t"] == [("declared", "GVL_A", None, 4)]  # in one list only: its own name
+
+
+def test_a_list_called_gvl_sharing_a_name_is_read_by_its_own_name_online():
+    """``GVL.x`` is any global for an online path, unless a list is called GVL: then it is that list's."""
+    gvl = GlobalVariableList(name="GVL", text="VAR_GLOBAL\n    x : INT := 7;\nEND_VAR")
+    sim = simulation(st("GVL_A.x := GVL.x + 1;"), gvls=(A, gvl))
+    sim.cycle(1)
+    assert (sim.read("GVL.x"), sim.read("GVL_A.x")) == (7, 8)

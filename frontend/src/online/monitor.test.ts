@@ -167,6 +167,9 @@ describe("paths into global variable lists", () => {
     expect(pathKey("gvl_a . x")).toBe("GVL_A.X");
     expect(pathKey("GVL_B.x[2].f")).toBe("GVL_B.X[2].F");
     expect(pathKey("GVL_B.xy")).toBe("XY");
+    setGlobalListNames(["GVL", "GVL_B"], ["X"]);
+    expect(pathKey("gvl.x")).toBe("GVL.X"); // a list called GVL: GVL.x is its variable
+    expect(pathKey("GVL.y")).toBe("Y");
     setGlobalListNames([]);
   });
 });

@@ -108,15 +108,13 @@ export const emptyMonitor: MonitorState = {
  * (`GVL_A.x` is `GVL_A.X`: the name alone is no variable then).
  */
 export function pathKey(path: string): string {
-  const key = path
-    .trim()
-    .toUpperCase()
-    .replace(/^GVL\s*\.\s*/, "");
+  const upper = path.trim().toUpperCase();
+  const qualified = /^([A-Z_][A-Z0-9_]*)\s*\.\s*(?=([A-Z_][A-Z0-9_]*))/.exec(upper);
+  if (qualified && lists.has(qualified[1]!) && shared.has(qualified[2]!))
+    return `${qualified[1]}.${upper.slice(qualified[0].length)}`; // (a list called GVL too)
+  const key = upper.replace(/^GVL\s*\.\s*/, "");
   const list = /^([A-Z_][A-Z0-9_]*)\s*\.\s*/.exec(key);
-  if (!list || !lists.has(list[1]!)) return key;
-  const rest = key.slice(list[0].length);
-  const name = /^[A-Z_][A-Z0-9_]*/.exec(rest)?.[0] ?? "";
-  return shared.has(name) ? `${list[1]}.${rest}` : rest;
+  return list && lists.has(list[1]!) ? key.slice(list[0].length) : key;
 }
 
 let lists = new Set<string>();
