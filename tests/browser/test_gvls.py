@@ -175,3 +175,41 @@ def test_a_bare_use_of_a_qualified_only_list_is_shown_at_its_line_and_a_list_var
     expect(page.locator('g.ld-element[data-id="q1"] .ld-badge').first).to_have_attribute("data-value", "TRUE")
     expect(page.locator('g.ld-element[data-id="q1"]')).to_have_class(re.compile(r"\bld-on\b"))  # the power flow too
     page.screenshot(path=str(ARTIFACTS / "gvl-online.png"))
+
+
+SHARED = {
+    "name": "shared",
+    "gvls": [
+        {"name": "GVL_A", "qualified_only": False, "text": "VAR_GLOBAL\n    n : INT := 5;\nEND_VAR"},
+        {"name": "GVL_B", "qualified_only": False, "text": "VAR_GLOBAL\n    n : INT;\nEND_VAR"},
+    ],
+    "pous": [
+        {
+            "name": "Main",
+            "kind": "program",
+            "language": "st",
+            "declarations": "",
+            "body": "GVL_B.n := GVL_A.n + 1;",
+        }
+    ],
+    "tasks": [{"name": "Fast", "interval": "T#10ms", "priority": 0, "programs": ["Main"]}],
+}
+
+
+def test_a_name_two_lists_declare_is_watched_and_shown_inline_per_list(page, server: str) -> None:
+    """CODESYS's namespace of global variable lists: GVL_A.n and GVL_B.n are two variables, each shown with its own
+    value in the watch list (the rows keyed by the qualified path, as the server names them) and inline in ST."""
+    store_project(server, SHARED)
+    page.goto(server)
+    page.get_by_role("navigation", name="Projects").get_by_role("button", name=re.compile("^shared")).click()
+    tree(page).get_by_role("button", name=re.compile("^Main")).click()
+    go_online(page, run=False)
+    a, b = watch(page, "GVL_A.n"), watch(page, "GVL_B.n")
+    expect(a).to_have_text("5")
+    expect(b).to_have_text("0")
+    page.get_by_role("button", name="Single cycle").click()
+    expect(b).to_have_text("6")  # GVL_A.n + 1
+    expect(a).to_have_text("5")
+    values = page.get_by_role("textbox", name="Main body").locator(".cm-st-value")
+    expect(values).to_have_text(["6", "5"])  # GVL_B.n, GVL_A.n
+    page.screenshot(path=str(ARTIFACTS / "gvl-shared-online.png"))

@@ -649,32 +649,6 @@ END_PROGRAM
     assert [sim.read(f"Main.f.{n}") for n in ("v", "seen", "w")] == [declared, own, own + added]
 
 
-def test_call_after_init_is_a_located_error_not_a_method_silently_left_uncalled():
-    # CODESYS calls a method marked {attribute 'call_after_init'} after the declaration's values ("Attribute:
-    # call_after_init"); LadderLab does not, so a program relying on it is refused where the attribute stands
-    text = """{attribute 'call_after_init'}
-FUNCTION_BLOCK FB_DoIt
-VAR_INPUT in1 : INT; END_VAR
-VAR_OUTPUT after : INT; END_VAR
-    {attribute 'call_after_init'}
-METHOD FB_AfterInit : BOOL
-after := in1; // {attribute 'call_after_init'} in a comment is none
-END_METHOD
-END_FUNCTION_BLOCK
-"""
-    _, diagnostics = source_to_project(text, "oo")
-    message = (
-        "LadderLab does not call a method marked {attribute 'call_after_init'} after the instance is initialised, as "
-        "CODESYS does: call the method from the program (on its first scan) and remove the attribute"
-    )
-    found = [(d.severity, d.code, d.line, d.column, d.end_column, d.message) for d in diagnostics]
-    assert found == [("error", "IR-UNSUPPORTED", 1, 1, 30, message), ("error", "IR-UNSUPPORTED", 5, 5, 34, message)]
-    project, _ = source_to_project(MOTOR, "oo")
-    project.pous[0].declarations = "{attribute 'call_after_init'}\n" + project.pous[0].declarations
-    built = [d.format() for d in build_project(project).diagnostics if d.code == "IR-UNSUPPORTED"]
-    assert built == [f"FB_Motor/declarations:1:1, POU FB_Motor: error IR-UNSUPPORTED: {message}"]
-
-
 def test_structured_values_of_the_declaration_come_after_fb_init_too():
     # a standard FB's input, a STRING, an array's element and a STRUCT's member set by the declaration: FB_init sees
     # F's own values (PT T#0s as TON declares it, 'own', 3, y 2), then the declaration's are assigned

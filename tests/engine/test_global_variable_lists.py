@@ -1,5 +1,5 @@
 """Named global variable lists (CODESYS's GVLs): ``GVL_IO.bStart`` in ST, IL, LD/FBD operands and SFC conditions,
-``{attribute 'qualified_only'}``, a name in two lists, online paths; scan by scan.
+``{attribute 'qualified_only'}``, a name in a list and the project's globals, online paths; scan by scan.
 
 Expected behaviour from CODESYS's online help: "Operator: Namespace for Global Variable Lists" (``globlist1.varx``
 names the list's variable; using a name declared in several lists without its list is an error), "Attribute:
@@ -103,11 +103,13 @@ def test_a_list_without_the_variable_is_a_located_error_with_a_suggestion():
     ]
 
 
-def test_a_name_declared_in_two_lists_is_an_error_at_the_second_declaration():
+def test_a_name_of_the_project_globals_in_a_list_too_is_an_error_at_the_second_declaration():
+    """The project's global variables have no list name (CODESYS has no such list): a list's ``counter`` and theirs
+    could not be told apart, so the second is refused (names shared by lists: test_gvl_shared_names.py)."""
     other = GlobalVariableList(name="GVL_B", text="VAR_GLOBAL\n    x : INT;\n    counter : INT;\nEND_VAR")
-    assert errors(st(""), gvls=(PLAIN, other)) == [
-        "gvls/GVL_B:3:5: error ST-DUPLICATE: 'counter' is declared twice (first in the global variable list GVL: "
-        "all global variable lists share one storage, so LadderLab needs a name to be declared once; rename one)"
+    assert errors(st(""), gvls=(other,), globals="VAR_GLOBAL\n    counter : INT;\nEND_VAR") == [
+        "gvls/GVL_B:3:5: error ST-DUPLICATE: 'counter' is declared twice (first in the global variables; the global "
+        "variables have no list name to tell the two apart by: rename one)"
     ]
 
 

@@ -12,6 +12,7 @@ import xml.etree.ElementTree as ET
 from ladderlab.interchange.plcopen.exporter import export_plcopen
 from ladderlab.interchange.plcopen.importer import import_plcopen
 from ladderlab.interchange.st.project import export_project_st
+from ladderlab.model import Task
 from ladderlab.simulation.build import build_project
 from ladderlab.st.project_text import source_to_project
 from tests.interchange.plcopen_helpers import xsd_errors
@@ -115,30 +116,56 @@ def test_the_st_export_prints_the_arguments_and_runs_the_same():
     assert values(again) == EXPECTED
 
 
-def test_a_codesys_method_marked_call_after_init_is_refused_at_the_import():
-    """CODESYS keeps ``{attribute 'call_after_init'}`` in its attributes entry of the method's interface ("Attribute:
-    call_after_init": the method is called after the instance's initialisation); LadderLab never calls it, so the
-    import says so at the method instead of dropping the attribute."""
+AFTER_INIT = """{attribute 'call_after_init'}
+FUNCTION_BLOCK FB_DoIt
+VAR_INPUT in1 : INT; END_VAR
+VAR_OUTPUT seen : INT; END_VAR
+{attribute 'call_after_init'}
+METHOD FB_AfterInit
+seen := in1 * 2;
+END_METHOD
+END_FUNCTION_BLOCK
+PROGRAM Main
+VAR fbDoIt : FB_DoIt := (in1 := 99); END_VAR
+END_PROGRAM
+"""
+
+
+def _after_init_project():
+    project, diagnostics = source_to_project(AFTER_INIT, "after")
+    assert diagnostics == []
+    return project.model_copy(update={"tasks": [Task(name="T", programs=["Main"])]})
+
+
+def test_call_after_init_is_written_as_codesys_writes_it_and_read_back_from_it_alone():
+    """CODESYS keeps ``{attribute 'call_after_init'}`` in its attributes entry of the POU's and the method's
+    interface; without LadderLab's own data the import puts it back on the first line of their declarations and
+    the method runs after the declaration's values (CODESYS's example: seen 198)."""
     tc6 = "http://www.plcopen.org/xml/tc6_0201"
-    root = ET.fromstring(export_plcopen(project()))
-    method = root.find(f".//{{{tc6}}}Method[@name='FB_reinit']")
-    interface = method.find(f"{{{tc6}}}interface")
-    if interface is None:
-        interface = ET.SubElement(method, f"{{{tc6}}}interface")
-    data = ET.SubElement(
-        ET.SubElement(interface, f"{{{tc6}}}addData"),
-        f"{{{tc6}}}data",
-        {"name": "http://www.3s-software.com/plcopenxml/attributes", "handleUnknown": "implementation"},
-    )
-    ET.SubElement(ET.SubElement(data, f"{{{tc6}}}Attributes"), f"{{{tc6}}}Attribute", {"Name": "call_after_init"})
-    imported = import_plcopen(without_ladderlab_data(ET.tostring(root)))
-    found = [(d.severity, d.code, d.pou, d.message) for d in imported.diagnostics if d.code == "IR-UNSUPPORTED"]
-    assert found == [
-        (
-            "error",
-            "IR-UNSUPPORTED",
-            "F",
-            "LadderLab does not call a method marked {attribute 'call_after_init'} after the instance is initialised, "
-            "as CODESYS does: call the method from the program (on its first scan) and remove the attribute",
-        )
-    ]
+    document = export_plcopen(_after_init_project())
+    assert xsd_errors(document) == []
+    root = ET.fromstring(without_ladderlab_data(document))
+    attribute = "tc6:addData/tc6:data/tc6:Attributes/tc6:Attribute"
+    ns = {"tc6": tc6}
+    pou = root.find(".//tc6:pou[@name='FB_DoIt']/tc6:interface", ns)
+    method = root.find(".//tc6:Method[@name='FB_AfterInit']/tc6:interface", ns)
+    assert [a.get("Name") for a in pou.findall(attribute, ns)] == ["call_after_init"]
+    assert [a.get("Name") for a in method.findall(attribute, ns)] == ["call_after_init"]
+    imported = import_plcopen(without_ladderlab_data(document))
+    assert [d.format() for d in imported.diagnostics if d.severity != "info"] == []
+    [fb] = [p for p in imported.project.pous if p.name == "FB_DoIt"]
+    assert fb.declarations.startswith("{attribute 'call_after_init'}\n")
+    assert fb.methods[0].declarations.startswith("{attribute 'call_after_init'}")
+    sim = build_project(imported.project).simulation()
+    assert sim.read("Main.fbDoIt.seen") == 198
+
+
+def test_call_after_init_comes_back_with_ladderlab_data_and_through_the_st_export():
+    project = _after_init_project()
+    assert import_plcopen(export_plcopen(project)).project == project
+    exported = export_project_st(project).text
+    assert exported.startswith("{attribute 'call_after_init'}\nFUNCTION_BLOCK FB_DoIt\n")
+    assert "{attribute 'call_after_init'}\nMETHOD PUBLIC FB_AfterInit\n" in exported
+    again, diagnostics = source_to_project(exported, "again")
+    assert diagnostics == []
+    assert build_project(again).simulation().read("Main.fbDoIt.seen") == 198

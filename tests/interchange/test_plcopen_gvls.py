@@ -109,3 +109,21 @@ def test_an_imported_and_exported_project_runs_the_same():
         sim.cycle(1)
         seen.append(sim.read("GVL_Par.nCount"))
     assert seen == [1, 2, 3, 4, 5, 5]
+
+
+def test_two_lists_sharing_a_name_go_out_and_come_back_and_run_the_same():
+    """CODESYS: a name in two lists is two variables, ``GVL_A.x`` and ``GVL_B.x`` (test_gvl_shared_names.py)."""
+    lists = [
+        GlobalVariableList(name="GVL_A", text="VAR_GLOBAL\n    x : INT := 5;\nEND_VAR"),
+        GlobalVariableList(name="GVL_B", text="VAR_GLOBAL\n    x : INT;\nEND_VAR"),
+    ]
+    main = Pou(name="Main", kind="program", language="st", body="GVL_B.x := GVL_B.x + GVL_A.x;")
+    project = Project(name="p", gvls=lists, pous=[main], tasks=[Task(name="T", programs=["Main"])])
+    document = export_plcopen(project)
+    assert xsd_errors(document) == []
+    assert import_plcopen(document).project == project
+    again = import_plcopen(strip_ladderlab(document)).project
+    assert again.gvls == lists
+    sim = build_project(again).simulation()
+    sim.cycle(3)
+    assert (sim.read("GVL_A.x"), sim.read("GVL_B.x")) == (5, 15)

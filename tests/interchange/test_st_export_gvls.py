@@ -69,3 +69,24 @@ def test_a_list_named_twice_in_a_file_is_one_list_and_a_located_error():
         ("ST-DUPLICATE", 6, "a second global variable list called G: its blocks are added to the first")
     ]
     assert [(g.name, g.text) for g in again.gvls] == [("G", "VAR_GLOBAL a : INT; END_VAR\nVAR_GLOBAL b : INT; END_VAR")]
+
+
+def test_two_lists_sharing_a_name_read_back_and_run_the_same_in_st_and_ld():
+    """CODESYS: a name in two lists is two variables, each used qualified (test_gvl_shared_names.py)."""
+    lists = [
+        GlobalVariableList(name="GVL_A", text="VAR_GLOBAL\n    b : BOOL;\nEND_VAR"),
+        GlobalVariableList(name="GVL_B", text="VAR_GLOBAL\n    b : BOOL;\nEND_VAR"),
+    ]
+    copy = ld_pou("Copy", "", rung("n1", contact("c1", "GVL_A.b"), coil("q1", "GVL_B.b")))
+    toggle = Pou(name="Toggle", kind="program", language="st", body="GVL_A.b := NOT GVL_A.b;")
+    project = Project(name="p", gvls=lists, pous=[toggle, copy], tasks=[Task(name="T", programs=["Toggle", "Copy"])])
+    text = export_project_st(project).text
+    again, diagnostics = source_to_project(text, "p")
+    assert diagnostics == []
+    assert again.gvls == lists
+    sim = build_project(again).simulation()
+    seen = []
+    for _ in range(3):
+        sim.cycle(1)
+        seen.append((sim.read("GVL_A.b"), sim.read("GVL_B.b")))
+    assert seen == [(True, True), (False, False), (True, True)]  # Copy runs after Toggle in the scan

@@ -3,6 +3,8 @@ and a runtime error in one faults the simulation at its start, located in the me
 
 from __future__ import annotations
 
+import time
+
 from fastapi.testclient import TestClient
 
 from ladderlab.simulation.registry import SimulationRegistry
@@ -61,3 +63,49 @@ def test_a_fault_in_fb_init_faults_the_simulation_at_its_start_and_again_after_a
     assert detail(refused)["message"] == "the simulation stopped on a fault: reset it before running"
     reset = client.post(f"/api/simulations/{sim}/reset", json={"cold": True}).json()
     assert reset["state"] == "faulted"
+
+
+AFTER_INIT = """{attribute 'call_after_init'}
+FUNCTION_BLOCK Scale
+VAR_INPUT d : INT; END_VAR
+VAR_OUTPUT k : INT; END_VAR
+{attribute 'call_after_init'}
+METHOD Setup
+k := 100 / d;
+END_METHOD
+END_FUNCTION_BLOCK
+PROGRAM Main
+VAR s : Scale := (d := D_VALUE); k : INT; END_VAR
+k := s.k;
+END_PROGRAM
+"""
+
+
+def test_a_call_after_init_method_runs_with_the_declarations_values_and_its_fault_is_located_in_its_body(
+    client: TestClient, workspace: Workspace, registry: SimulationRegistry
+) -> None:
+    """CODESYS's "Attribute: call_after_init": the method runs after the declaration's values (d 4: k 25; d 0: a
+    division by zero in its body, line 7 of the file, before any task runs)."""
+    for name, d in (("fine", 4), ("broken", 0)):
+        project, diagnostics = source_to_project(AFTER_INIT.replace("D_VALUE", str(d)), name)
+        assert diagnostics == []
+        workspace.create(project)
+    fine = client.post("/api/projects/fine/simulations").json()["id"]
+    client.post(f"/api/simulations/{fine}/cycle")
+    assert entry(registry, fine).handle.read("Main.k") == 25
+    broken = client.post("/api/projects/broken/simulations").json()["id"]
+    info = client.get(f"/api/simulations/{broken}").json()
+    for _ in range(50):  # the worker may report the initialisation's fault a moment after the answer
+        if info["fault"] is not None:
+            break
+        time.sleep(0.1)
+        info = client.get(f"/api/simulations/{broken}").json()
+    fault = info["fault"]
+    assert (info["state"], fault["code"], fault["pou"], fault["line"], fault["column"]) == (
+        "faulted",
+        "ENGINE-RUNTIME",
+        "SCALE.SETUP",
+        7,
+        1,
+    )
+    assert ", task (initialisation), scan 0" in fault["message"]

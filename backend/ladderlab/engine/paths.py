@@ -274,7 +274,7 @@ class Resolver:
         if listed is not None and rest[:1] == [("punct", ".")]:  # GVL_IO.x: a named list's variable
             name, after = self._member_name(rest, text)
             if name.upper() in listed:
-                return self._global(text, name, after)
+                return self._global(text, listed[name.upper()], after)
             if first != GLOBALS_PREFIX:  # a list called GVL: GVL.x is any global still
                 raise UnknownPath(f"the global variable list {toks[0][1]} has no variable {name!r}")
         if first == GLOBALS_PREFIX and rest[:1] == [("punct", ".")]:
@@ -315,6 +315,13 @@ class Resolver:
                     root = ("global", global_owner(place.page))
                     return self._steps(text, name.upper(), root, (place.attr,), place.slot, rest)
         if place is None:
+            shared = [
+                f"{key}.{name.upper()}"
+                for key, listed in self.context.program.gvls.items()
+                if "." in listed.get(name.upper(), "")
+            ]
+            if shared:  # a name several lists declare (st/gvls.py)
+                raise UnknownPath(f"{name} is declared in several global variable lists: write {' or '.join(shared)}")
             candidates = [p.slot.name for p in self.context.globals.places.values() if not p.slot.hidden]
             if top:
                 pou = self.context.pous.get(name.upper())

@@ -15,7 +15,9 @@ value for a member that is an instance) is assigned after that instance's FB_ini
 call_after_init": ``fbDoIt.FB_Init(); fbDoIt.in1 := 99;``; Beckhoff's FB_init page, "Observe the order of
 initialization"): the instances are made with those values (engine/codegen/constructors.py), so before its FB_init
 each such variable is set back to the FB's own declared value and after it to the declaration's. A warm restart does
-the same except for the RETAIN variables, which keep their values. The
+the same except for the RETAIN variables, which keep their values. Then the
+instance calls its call_after_init methods (CODESYS's "Attribute: call_after_init": ``fbDoIt.FB_AfterInit();`` after
+the declaration's values; st/call_after_init.py), the base's first, each as the instance's FB runs it. The
 statements are plain method calls that run the base's method itself (no dispatch), so the engine runs, pauses and
 locates faults in them as in any call (engine/codegen/tasks.py ``ll_fb_init``).
 """
@@ -48,9 +50,26 @@ def method_chains(checked: CheckResult, key: str) -> dict[str, list[str]]:
     return chains
 
 
+def after_init_chains(checked: CheckResult) -> dict[str, list[str]]:
+    """For each FB whose instances call methods after their initialisation ({attribute 'call_after_init'},
+    st/call_after_init.py): each such method of its lineage, the base's first, as the FB runs it (an override in its
+    place)."""
+    chains = {}
+    for info in checked.pous.values():
+        if info.kind == "FUNCTION_BLOCK" and info.after_init:
+            keys = dict.fromkeys(
+                key for fb in reversed(info.lineage()) for key, m in fb.methods.items() if m.after_init
+            )
+            chain = [found.name.upper() for found in map(info.find_method, keys) if found is not None]
+            if chain:
+                chains[info.name.upper()] = chain
+    return chains
+
+
 def init_statements(program: Program, retains: bool) -> list[Stmt]:
-    """The FB_init calls of every instance of ``program``, in order (``retains``: a cold start)."""
-    return _Walk(program, program.fb_inits, retains, with_args=True).run()
+    """The FB_init calls of every instance of ``program``, each followed by its call_after_init calls, in order
+    (``retains``: a cold start)."""
+    return _Walk(program, program.fb_inits, retains, with_args=True, after=program.after_inits).run()
 
 
 def exit_statements(program: Program) -> list[Stmt]:
@@ -61,8 +80,16 @@ def exit_statements(program: Program) -> list[Stmt]:
 
 
 class _Walk:
-    def __init__(self, program: Program, chains: dict[str, list[str]], retains: bool, with_args: bool) -> None:
+    def __init__(
+        self,
+        program: Program,
+        chains: dict[str, list[str]],
+        retains: bool,
+        with_args: bool,
+        after: dict[str, list[str]] | None = None,
+    ) -> None:
         self.program, self.chains, self.retains, self.with_args = program, chains, retains, with_args
+        self.after = after or {}  # FB -> the methods its instances call last (call_after_init)
         self.out: list[Stmt] = []
         self._needs: dict[str, bool] = {}
 
@@ -80,7 +107,7 @@ class _Walk:
             self._needs[fb] = False  # (a cycle of instances is refused by the checker)
             pou = self.program.pous.get(fb)
             inside = pou is not None and any(self.holds(slot.type) for slot in pou.slots if _made(slot))
-            self._needs[fb] = fb in self.chains or inside
+            self._needs[fb] = fb in self.chains or fb in self.after or inside
         return self._needs[fb]
 
     def holds(self, ty: IrType) -> bool:
@@ -138,6 +165,9 @@ class _Walk:
             self.out.append(FnCall(call, None, ORIGIN))
         if chain and declared:
             self.out += _Values(self.program, warm).assign(var, var.type, declared)
+        for method in self.after.get(fb, []):  # (no inputs: st/call_after_init.py)
+            call = Call(method, (), (), self.program.pous[method].return_type or BOOL, True, (var,), False)
+            self.out.append(FnCall(call, None, ORIGIN))
 
     def system(self, slot: Slot) -> Const | None:
         if slot.name == "BINITRETAINS":

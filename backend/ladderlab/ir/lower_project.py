@@ -29,7 +29,7 @@ from ..st.libraries import with_libraries
 from ..st.symbols import CheckResult, PouInfo, Symbol
 from .build_limits import data_too_large, source_too_large
 from .context import PouContext
-from .fb_init import method_chains
+from .fb_init import after_init_chains, method_chains
 from .lower_configuration import lower_configuration
 from .lower_fbd import lower_cfc_body, lower_fbd_body
 from .lower_il import lower_il_body
@@ -96,7 +96,8 @@ def _lower_typed_project(project: Project, checked: CheckResult | None) -> Lower
     program.dispatch = dispatch_tables(checked)
     program.fb_inits = method_chains(checked, "FB_INIT")
     program.fb_exits = method_chains(checked, "FB_EXIT")
-    program.gvls = {key: frozenset(gvl.members) for key, gvl in checked.gvls.items()}
+    program.after_inits = after_init_chains(checked)
+    program.gvls = {key: {k: s.name.upper() for k, s in gvl.members.items()} for key, gvl in checked.gvls.items()}
     program.addresses = st_types.codesys_typing()
     program.base_bodies = frozenset(
         info.base.name.upper() for info in checked.pous.values() if info.runs_base_body and info.base is not None

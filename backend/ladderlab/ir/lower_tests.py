@@ -127,6 +127,7 @@ def lower_test_file(project: Project, text: str, file: str) -> TestProgram:
         base_bodies=lowered.program.base_bodies,
         fb_inits=lowered.program.fb_inits,
         fb_exits=lowered.program.fb_exits,
+        after_inits=lowered.program.after_inits,
         mockable=True,
         gvls=lowered.program.gvls,
         addresses=lowered.program.addresses,

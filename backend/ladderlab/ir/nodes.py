@@ -514,11 +514,14 @@ class Program:
     fb_inits: dict[str, list[str]] = field(default_factory=dict)
     #: FB -> the FB_exit methods its instances run before a restart, base first (ir/fb_init.py reverses them)
     fb_exits: dict[str, list[str]] = field(default_factory=dict)
+    #: FB -> the methods its instances call after FB_init and the declaration's values (call_after_init), base first
+    after_inits: dict[str, list[str]] = field(default_factory=dict)
     #: FB instances may be mocked (a unit test program, engine/doubles.py swaps an instance's class): the standard
     #: FB bodies pasted in place of their calls are guarded by the instance's class
     mockable: bool = False
-    #: named global variable list (upper case) -> its variables (upper case), which are globals: ``GVL_IO.x`` paths
-    gvls: dict[str, frozenset[str]] = field(default_factory=dict)
+    #: named global variable list (upper case) -> its variables (upper case) -> the global each is (its own name, or
+    #: ``LIST.X`` when lists share the name): ``GVL_IO.x`` paths
+    gvls: dict[str, dict[str, str]] = field(default_factory=dict)
     #: CODESYS typing: a pointer may be taken as a number, so ADR() / REF() and VAR_IN_OUT arguments tell the engine
     #: which variable a part belongs to (engine/codegen/addresses.py)
     addresses: bool = False

@@ -100,7 +100,12 @@ _TABLE: list[tuple[str, str, Severity, str]] = [
         "Control code calls a plant or its method or property (plants run in the plant task, never called).",
     ),
     ("st", "ST-CALL-ARGS", "error", "The arguments of a call do not match its parameters."),
-    ("st", "ST-AMBIGUOUS", "error", "An enumeration value belongs to several enumerations."),
+    (
+        "st",
+        "ST-AMBIGUOUS",
+        "error",
+        "A name is a value of several enumerations or a variable of several global variable lists.",
+    ),
     (
         "st",
         "ST-QUALIFIED-ONLY",
@@ -123,7 +128,7 @@ _TABLE: list[tuple[str, str, Severity, str]] = [
     ("st", "ST-CASE-OVERLAP", "warning", "Two CASE labels overlap: only the first branch ever runs."),
     ("st", "ST-NO-EFFECT", "error", "A statement computes a value and does nothing with it."),
     ("st", "ST-NO-RESULT", "warning", "A function never assigns its result."),
-    ("st", "ST-PRAGMA", "warning", "A pragma stands where it has no effect."),
+    ("st", "ST-PRAGMA", "warning", "A pragma stands where it has no effect (call_after_init: an error)."),
     # both diagram languages (ir/diagram_*.py), as LD-... and FBD-...
     ("diagram", "MISSING-OPERAND", "error", "An element has no operand."),
     ("diagram", "NOT-BOOL", "error", "An element that carries power or a BOOL value is given another type."),

@@ -136,7 +136,7 @@ def _walk(result: CheckResult, path: str) -> tuple[t.Type, tuple[int, ...]]:
             raise ApiError(404, f"the global variable list {gvl.name} has no variable {rest[1][1]!r}")
         if qualified and (listed or head.upper() == GLOBALS_PREFIX):  # GVL_IO.x: the list's variable, GVL.x: a global
             head, rest = rest[1][1], rest[2:]
-        symbol = result.globals.get(head.upper())
+        symbol = gvl.members[head.upper()] if listed and gvl is not None else result.globals.get(head.upper())
         if symbol is None:
             raise ApiError(404, f"no program or global variable {head!r}{did_you_mean(head, _top_names(result))}")
         ty = symbol.type

@@ -20,7 +20,7 @@ from . import types as t
 from .calls import check_call, unreferable
 from .cases import check_case
 from .context_typing import default_type, settle, untyped_leaves, untyped_result
-from .gvls import check_unqualified, list_member
+from .gvls import check_unqualified, list_member, shared_use
 from .interfaces import check_attempt, reference_comparison
 from .methods import check_property, is_self, own_property, this_type, unknown_member_hint
 from .rules import EnumValue, assignable_or_report, constant_value, root_name
@@ -184,6 +184,8 @@ class BodyChecker:
             if self.result.listed:
                 check_unqualified(self, node, symbol)
             return symbol.type
+        if self.result.shared and shared_use(self.result, self.report, node, node.name):
+            return ERROR
         if self.pou is not None and self.pou.kind == "FUNCTION" and node.name.upper() == _result_name(self.pou):
             node.ref = self.pou
             return self.pou.return_type or ERROR

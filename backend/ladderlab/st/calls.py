@@ -17,6 +17,7 @@ from ..iec.values import article
 from . import ast
 from . import types as t
 from .context_typing import default_type, untyped_leaves
+from .gvls import shared_use
 from .libraries import library_of
 from .methods import SUPER, check_method_call, method_callee, this_type
 from .printer import print_expression
@@ -50,6 +51,9 @@ def check_call(checker: Any, node: ast.Call, statement: bool) -> Type:
     if symbol is not None:
         callee.ref, callee.ty = symbol, symbol.type
         return _instance_call(checker, node, symbol.type, statement)
+    if checker.result.shared and shared_use(checker.result, checker.report, callee, callee.name):
+        _args_untyped(checker, node)
+        return ERROR
     pou = checker.result.pous.get(upper)
     if pou is not None:
         return _pou_call(checker, node, pou, statement)

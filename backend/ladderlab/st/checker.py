@@ -22,6 +22,7 @@ from ..model.project import Project
 from . import ast
 from . import types as t
 from .body import BodyChecker
+from .call_after_init import check_call_after_init
 from .configuration import check_configuration, configuration_globals
 from .fb_init import (
     check_fb_init_methods,
@@ -31,7 +32,7 @@ from .fb_init import (
     instance_spec,
     project_blocks,
 )
-from .gvls import clashing_name, gvl_texts, register_lists, twice_hint
+from .gvls import clashing_name, gvl_texts, register_lists, share, shared_use, twice_hint
 from .il_check import check_il_body
 from .il_parser import IlBody, parse_il
 from .inheritance import abstract_instance, check_overrides, link_bases
@@ -157,6 +158,7 @@ class ProjectChecker:
             info = self.result.pous.get(pou.name.upper())
             if (pou.methods or pou.properties or pou.actions) and info is not None and info.name == pou.name:
                 methods += declare_methods(self, info, pou.methods, pou.properties, pou.actions)
+        check_call_after_init(self.result, self.project)
         blocks = [info for info in self.result.pous.values() if info.kind == "FUNCTION_BLOCK"]
         check_overrides(self, blocks)
         check_implementations(self, blocks)
@@ -433,14 +435,21 @@ class ProjectChecker:
                     block,
                 )
                 continue
-            before = set(self.result.globals)
             gvl = self._gvl_files.get(file)
+            table = self.result.globals if gvl is None else gvl.members  # a list's: other lists may share a name
+            before = set(table)
             twice = partial(twice_hint, self.result, in_list=gvl is not None)
-            self.declare_block(block, self.result.globals, checker, None, twice=twice)
-            for key in self.result.globals.keys() - before:
-                self._check_global(self.result.globals[key], checker)
-                if gvl is not None:
-                    gvl.members[key], self.result.listed[key] = self.result.globals[key], gvl
+            self.declare_block(block, table, checker, None, twice=twice if gvl is None else None)
+            for key in [key for key in table if key not in before]:  # (in declaration order)
+                symbol = table[key]
+                if gvl is None and key in self.result.shared:  # a configuration's global named like lists' ones
+                    del table[key]
+                    checker.report("ST-DUPLICATE", f"'{symbol.name}' is declared twice" + twice(key), symbol)
+                    continue
+                self._check_global(symbol, checker)
+                if gvl is not None and not share(self.result, gvl, key, symbol):
+                    del table[key]
+                    checker.report("ST-DUPLICATE", f"'{symbol.name}' is declared twice" + twice(key), symbol)
 
     def _check_global(self, symbol: Symbol, checker: BodyChecker) -> None:
         program = self.result.pous.get(symbol.name.upper())
@@ -625,6 +634,8 @@ class ProjectChecker:
         if symbol.address is not None and symbol.name == symbol.address:
             return  # VAR_EXTERNAL AT %X0.0 : BOOL: the address itself, global by nature (VAR-73, Ex 3.21)
         target = self.result.globals.get(symbol.name.upper())
+        if target is None and shared_use(self.result, report, node, symbol.name):
+            return
         if target is None:
             report(
                 "ST-EXTERNAL",

@@ -1,10 +1,10 @@
 """Named global variable lists (CODESYS's GVLs, ``Project.gvls``): ``GVL_IO.bStart`` names the list's variable,
 a qualified_only list's variables are used only so (docs/st.md, "Global variable lists").
 
-The lists' variables share the one global storage of the project's other globals, so a name may be declared by
-one list only (CODESYS allows it in two and then needs the qualified name; the second declaration is an error
-here instead). ``GVL.x`` is checked as the global ``x``: the checker sets the ``ref`` of the member and of its
-base to the variable (``list_qualified``), so every later stage reads it as that global.
+A name declared in several lists is several variables, each used as ``LIST.x`` only (a bare ``x`` is ambiguous, as
+CODESYS's C0136): each is the global ``LIST.x`` then (``share``), so storage, online paths and the engine tell them
+apart. ``GVL.x`` is checked as the list's variable: the checker sets the ``ref`` of the member and of its base to
+the variable (``list_qualified``), so every later stage reads it as that global.
 """
 
 from __future__ import annotations
@@ -51,15 +51,60 @@ def clashing_name(result: CheckResult, info: GvlInfo) -> str | None:
 
 def twice_hint(result: CheckResult, name: str, in_list: bool) -> str:
     """Why a second global declaration of ``name`` is refused when a list is involved (``in_list``: the second
-    is in one); "" when none is."""
-    first = result.listed.get(name.upper())
-    if first is None and not in_list:
+    is in one; lists may share a name, the project's and the configuration's global variables, which have no list
+    name to tell them apart by, may not); "" when none is."""
+    upper = name.upper()
+    first = result.listed.get(upper)
+    lists = result.shared.get(upper)
+    if first is None and lists is None and not in_list:
         return ""
-    where = f"the global variable list {first.name}" if first is not None else "the global variables"
-    return (
-        f" (first in {where}: all global variable lists share one storage, so LadderLab needs a name to be "
-        "declared once; rename one)"
+    if lists is not None:
+        where = "the global variable lists " + " and ".join(gvl.name for gvl in lists)
+    else:
+        where = f"the global variable list {first.name}" if first is not None else "the global variables"
+    return f" (first in {where}; the global variables have no list name to tell the two apart by: rename one)"
+
+
+def share(result: CheckResult, gvl: GvlInfo, key: str, symbol: Symbol) -> bool:
+    """Add the list ``gvl``'s new variable ``symbol`` (``key``: its upper-case name) to the globals; False when a
+    global variable outside the lists has its name (a duplicate). A name in several lists is each list's
+    ``LIST.x`` (``result.shared``)."""
+    lists = result.shared.get(key)
+    if lists is None and key not in result.globals:
+        result.globals[key], result.listed[key] = symbol, gvl
+        return True
+    if lists is None:
+        first = result.listed.pop(key, None)
+        if first is None:
+            return False
+        lists = result.shared[key] = [first]
+        _qualify(result, first, result.globals.pop(key))
+    lists.append(gvl)
+    _qualify(result, gvl, symbol)
+    return True
+
+
+def _qualify(result: CheckResult, gvl: GvlInfo, symbol: Symbol) -> None:
+    """``symbol``, a variable of ``gvl`` whose name another list declares too, as the global ``LIST.x``."""
+    symbol.name = f"{gvl.name}.{symbol.name}"
+    key = symbol.name.upper()
+    result.globals[key], result.listed[key] = symbol, gvl
+
+
+def shared_use(result: CheckResult, report: Any, node: Any, name: str) -> bool:
+    """Report a bare use of a name that several lists declare (CODESYS C0136, "ambiguous use of name"): which lists,
+    and what to write; False when ``name`` is in one list at most."""
+    lists = result.shared.get(name.upper())
+    if lists is None:
+        return False
+    names = [gvl.name for gvl in lists]
+    report(
+        "ST-AMBIGUOUS",
+        f"'{name}' is declared in the global variable lists {', '.join(names[:-1])} and {names[-1]}: write "
+        + " or ".join(f"{gvl}.{name}" for gvl in names),
+        node,
     )
+    return True
 
 
 def list_qualified(node: Any) -> bool:

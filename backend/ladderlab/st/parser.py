@@ -28,7 +28,7 @@ from .errors import describe_unexpected, last_token, literal_problem, would_acce
 from .fast_lalr import NotFast, fast_parse
 from .lark_cache import cached_lark
 from .nesting import too_deep
-from .pragmas import attach_pack_modes, misplaced_pack_modes, unsupported_pragmas
+from .pragmas import attach_pack_modes, misplaced_call_after_init, misplaced_pack_modes
 from .quick_decls import DEPTH as QUICK_DEPTH
 from .quick_decls import quick_declarations
 from .transformer import AstBuilder, StSyntaxError
@@ -165,7 +165,7 @@ def parse_source(text: str, *, file: str | None = None, nested_comments: bool = 
     if result.ast is not None:
         result.diagnostics += attach_pack_modes(result.ast, prepared, file)
         _name_pous(result)
-        return _finish(result, text, file)
+        return _finish(result, text, file, place="source")
     items: list[Any] = []
     diagnostics: list[Diagnostic] = []
     for unit in split_units(prepared):
@@ -178,12 +178,12 @@ def parse_source(text: str, *, file: str | None = None, nested_comments: bool = 
         diagnostics = result.diagnostics
     source = ast.Source(items, ast.NO_SPAN)
     diagnostics += attach_pack_modes(source, prepared, file)
-    return _finish(ParseResult(source, diagnostics), text, file)
+    return _finish(ParseResult(source, diagnostics), text, file, place="source")
 
 
 def parse_pou(text: str, *, file: str | None = None, nested_comments: bool = False) -> ParseResult:
     """Exactly one PROGRAM, FUNCTION_BLOCK or FUNCTION."""
-    return _finish(_run(_prepare(text, nested_comments), "start_pou", file), text, file)
+    return _finish(_run(_prepare(text, nested_comments), "start_pou", file), text, file, place="source")
 
 
 def parse_declarations(
@@ -196,10 +196,10 @@ def parse_declarations(
     prepared = _prepare(text, nested_comments)
     quick = quick_declarations(prepared, grammar_keywords())
     if quick is not None:
-        return _finish(ParseResult(quick), text, file, pou, depth=QUICK_DEPTH)
+        return _finish(ParseResult(quick), text, file, pou, depth=QUICK_DEPTH, place="declarations")
     result = _run(prepared, "start_decls", file, pou=pou)
     result.diagnostics += misplaced_pack_modes(prepared, file, pou)  # no TYPE here for one to pack
-    return _finish(result, text, file, pou)
+    return _finish(result, text, file, pou, place="declarations")
 
 
 def parse_statements(
@@ -247,10 +247,16 @@ def _prepare(text: str, nested_comments: bool) -> str:
 
 
 def _finish(
-    result: ParseResult, original: str, file: str | None = None, pou: str | None = None, depth: int | None = None
+    result: ParseResult,
+    original: str,
+    file: str | None = None,
+    pou: str | None = None,
+    depth: int | None = None,
+    place: str = "",
 ) -> ParseResult:
-    """``depth``: how deeply the AST is known to nest (expression levels; no statements), when it is."""
-    result.diagnostics += unsupported_pragmas(original, file, pou)
+    """``depth``: how deeply the AST is known to nest (expression levels; no statements), when it is; ``place``:
+    what the text is for the call_after_init attribute (st/pragmas.py)."""
+    result.diagnostics += misplaced_call_after_init(original, file, pou, place)
     if result.ast is not None and (
         depth > limits.EXPRESSION_DEPTH.value if depth is not None else _may_nest_too_deep(result, original)
     ):

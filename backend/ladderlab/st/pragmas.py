@@ -1,5 +1,5 @@
-"""CODESYS's ``{attribute 'pack_mode' := 'N'}``, the one pragma that changes what a program computes here (and
-``{attribute 'call_after_init'}``, which would, refused: ``unsupported_pragmas``).
+"""CODESYS's ``{attribute 'pack_mode' := 'N'}`` and ``{attribute 'call_after_init'}``, the pragmas that change what a
+program computes here (the second: where it stands, ``misplaced_call_after_init``; what it does, st/call_after_init.py).
 
 The lexer skips every pragma (``%ignore PRAGMA``); this pass finds the pack_mode ones in the text and gives each
 to the TYPE declaration it stands above (``TypeDecl.pack_mode``), as CODESYS places it: "Insert location: above
@@ -21,12 +21,9 @@ from typing import Any
 from ..model.diagnostics import Diagnostic
 from . import ast
 
-#: Why ``{attribute 'call_after_init'}`` is refused (IR-UNSUPPORTED), wherever it is found (the PLCopen import too)
-CALL_AFTER_INIT_REFUSED = (
-    "LadderLab does not call a method marked {attribute 'call_after_init'} after the instance is initialised, as "
-    "CODESYS does: call the method from the program (on its first scan) and remove the attribute"
-)
+CALL_AFTER_INIT = "{attribute 'call_after_init'}"
 _CALL_AFTER_INIT = re.compile(r"\{\s*attribute\s+'call_after_init'\s*\}", re.IGNORECASE)
+_HEADER = re.compile(r"(?:FUNCTION_BLOCK|METHOD)\b", re.IGNORECASE)
 _PACK_MODE = re.compile(r"\{\s*attribute\s+'pack_mode'\s*:=\s*'([^']*)'\s*\}", re.IGNORECASE)
 # What the lexer skips too: strings are jumped over, a pragma is captured (group 1)
 _LEXED = re.compile(r"'(?:[^'$\n]|\$.)*'|\"(?:[^\"$\n]|\$.)*\"|\(\*[\s\S]*?\*\)|/\*[\s\S]*?\*/|//[^\n]*|(\{[^}]*\})")
@@ -100,15 +97,82 @@ def _misplaced(pragma: re.Match[str], starts: list[int], file: str | None, pou: 
     )
 
 
-def unsupported_pragmas(text: str, file: str | None = None, pou: str | None = None) -> list[Diagnostic]:
-    """The error IR-UNSUPPORTED at each ``{attribute 'call_after_init'}`` of ``text``: CODESYS calls a method marked
-    so after an instance's initialisation ("Attribute: call_after_init"), which LadderLab does not do yet, so a program
-    relying on it would run with other values than CODESYS's (docs/st.md, "FB_init and FB_exit")."""
+def misplaced_call_after_init(text: str, file: str | None, pou: str | None, place: str = "") -> list[Diagnostic]:
+    """The error ST-PRAGMA at each ``{attribute 'call_after_init'}`` of ``text`` that stands where it has no effect.
+    CODESYS: "Insert location: first line above the declaration part of the method and of the function block". So it
+    is in place at the head of a declarations text (``place`` "declarations": which POU's or method's, the checker
+    sees, st/call_after_init.py) and above a FUNCTION_BLOCK or METHOD header of a whole file (``place`` "source")."""
     if "call_after_init" not in text.lower():
         return []
     starts = _line_starts(text)
-    refused = Diagnostic(severity="error", code="IR-UNSUPPORTED", message=CALL_AFTER_INIT_REFUSED, file=file, pou=pou)
-    return [_at(pragma, starts, refused) for pragma in _pragmas(text, _CALL_AFTER_INIT)]
+    return [
+        _at(pragma, starts, misplaced_diagnostic(file, pou))
+        for pragma in _pragmas(text, _CALL_AFTER_INIT)
+        if not (place == "declarations" and _skip(text, 0) >= pragma.end())
+        and not (place == "source" and _HEADER.match(text, _skip(text, pragma.end())))
+    ]
+
+
+def head_call_after_init(text: str) -> tuple[int, int, int, int] | None:
+    """Where ``{attribute 'call_after_init'}`` stands at the head of a declarations text (before its first block:
+    the attribute of the POU or method the text declares), as (line, column, end line, end column); None if not."""
+    if "call_after_init" not in text.lower():
+        return None
+    head = _skip(text, 0)
+    starts = _line_starts(text)
+    for pragma in _pragmas(text[:head], _CALL_AFTER_INIT):
+        return (*_position(starts, pragma.start()), *_position(starts, pragma.end()))
+    return None
+
+
+def without_call_after_init(text: str) -> tuple[str, str]:
+    """A declarations text split for IEC text, where the attribute stands above the header (CODESYS): the attribute
+    heading it (``CALL_AFTER_INIT`` or "") and the text without it."""
+    place = head_call_after_init(text)
+    if place is None:
+        return "", text
+    starts = _line_starts(text)
+    start, end = starts[place[0] - 1] + place[1] - 1, starts[place[2] - 1] + place[3] - 1
+    before, after = text[:start], text[end:]
+    return CALL_AFTER_INIT, before + after if before.strip() else after.lstrip("\n")
+
+
+def attributed_headers(text: str) -> set[tuple[int, int]]:
+    """The (line, column) of each FUNCTION_BLOCK or METHOD header of a whole file that the call_after_init attribute
+    stands above (comments and other pragmas may stand between)."""
+    if "call_after_init" not in text.lower():
+        return set()
+    starts = _line_starts(text)
+    found = set()
+    for pragma in _pragmas(text, _CALL_AFTER_INIT):
+        header = _skip(text, pragma.end())
+        if _HEADER.match(text, header):
+            found.add(_position(starts, header))
+    return found
+
+
+def with_call_after_init(text: str) -> str:
+    """A declarations text headed by the attribute (read from above a header in IEC text), its lines kept: the
+    attribute takes the first of the blank lines that pad it (st/project_text.py), or a line of its own."""
+    if text.startswith("\n"):
+        return CALL_AFTER_INIT + text
+    return f"{CALL_AFTER_INIT}\n{text}" if text else CALL_AFTER_INIT
+
+
+def misplaced_diagnostic(file: str | None, pou: str | None, why: str = "") -> Diagnostic:
+    """ST-PRAGMA: a call_after_init attribute that would have no effect (``why``: what is wrong, else where it
+    stands)."""
+    return Diagnostic(
+        severity="error",
+        code="ST-PRAGMA",
+        message=(
+            f"the attribute 'call_after_init' has no effect {why or 'here'}: CODESYS calls a method after an "
+            "instance's initialisation when the attribute stands on the first line of the declarations of both the "
+            "function block and the method; move it there or remove it"
+        ),
+        file=file,
+        pou=pou,
+    )
 
 
 def _at(pragma: re.Match[str], starts: list[int], diagnostic: Diagnostic) -> Diagnostic:

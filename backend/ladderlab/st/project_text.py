@@ -28,7 +28,7 @@ from . import ast
 from .gvl_text import gvl_heading
 from .il_parser import blank_il_bodies
 from .parser import parse_source
-from .pragmas import block_text
+from .pragmas import attributed_headers, block_text, with_call_after_init
 from .printer import print_expression
 from .sfc_text import sfc_from_text
 
@@ -44,6 +44,13 @@ class _Text:
         for index, char in enumerate(text):
             if char == "\n":
                 self.starts.append(index + 1)
+        #: the FUNCTION_BLOCK and METHOD headers {attribute 'call_after_init'} stands above (st/pragmas.py)
+        self.attributed = attributed_headers(text)
+
+    def declarations(self, node, text: str) -> str:
+        """The declarations text of ``node`` (a POU or a method), headed by the call_after_init attribute when it
+        stood above the node's header (the model keeps it there: st/call_after_init.py)."""
+        return with_call_after_init(text) if (node.span.line, node.span.column) in self.attributed else text
 
     def offset(self, line: int, column: int) -> int:
         return self.starts[line - 1] + column - 1
@@ -159,7 +166,7 @@ def _pou(pou: ast.Pou, source: _Text, language: str) -> Pou:
         kind=_KIND[pou.kind],
         language=language,
         return_type=_type_text(pou.return_type, source),
-        declarations=_keep_lines(*declarations) if declarations[0] else "",
+        declarations=source.declarations(pou, _keep_lines(*declarations) if declarations[0] else ""),
         body=_keep_lines(*body),
         **_object_parts(pou, source),
     )
@@ -213,7 +220,7 @@ def _method(method: ast.MethodDecl, source: _Text) -> Method:
         final="FINAL" in method.modifiers,
         abstract="ABSTRACT" in method.modifiers,
         return_type=_type_text(method.return_type, source),
-        declarations=_keep_lines(*declarations) if declarations[0] else "",
+        declarations=source.declarations(method, _keep_lines(*declarations) if declarations[0] else ""),
         body=_keep_lines(*body),
     )
 

@@ -75,6 +75,8 @@ class PouInfo:
     interfaces: list[PouInfo] = field(default_factory=list)  # an FB: those it IMPLEMENTS; an INTERFACE: it EXTENDS
     methods_called: list[tuple[PouInfo, bool]] = field(default_factory=list)  # METHODs it calls, dispatched or not
     runs_base_body: bool = False  # a function block whose body or a method calls SUPER^(): runs its base's body
+    #: CODESYS's {attribute 'call_after_init'} on a function block or on its method (st/call_after_init.py)
+    after_init: bool = False
     #: the FB bodies its code runs (``SUPER^()``: the base's; ``THIS^()`` in a method: dispatched, the instance's own
     #: class's) with the call, for POU-02 (methods.check_method_recursion)
     bodies_called: list[tuple[PouInfo, bool, Any]] = field(default_factory=list)
@@ -157,8 +159,8 @@ class PropertyRef:
 
 @dataclass(eq=False)
 class GvlInfo:
-    """A named global variable list (``Project.gvls``): its variables, which are also in ``CheckResult.globals``
-    (one global storage: a name is declared by one list only)."""
+    """A named global variable list (``Project.gvls``): its variables by their own (upper-case) names, which are also
+    in ``CheckResult.globals``: under the same name, or as ``LIST.X`` when another list declares the name too."""
 
     name: str
     qualified_only: bool
@@ -173,7 +175,9 @@ class CheckResult:
     pous: dict[str, PouInfo] = field(default_factory=dict)
     interfaces: dict[str, PouInfo] = field(default_factory=dict)  # INTERFACEs (kind INTERFACE) by upper-case name
     gvls: dict[str, GvlInfo] = field(default_factory=dict)  # named global variable lists by upper-case name
-    listed: dict[str, GvlInfo] = field(default_factory=dict)  # a GVL's variable (upper case) -> its list
+    listed: dict[str, GvlInfo] = field(default_factory=dict)  # a GVL's variable (its globals key) -> its list
+    #: a name declared in several lists (upper case) -> those lists: each keeps its variable as ``LIST.X``
+    shared: dict[str, list[GvlInfo]] = field(default_factory=dict)
     configuration: Any = None  # configuration.ConfigurationInfo: the instances and tasks the project runs
 
     @property

@@ -14,6 +14,7 @@ from dataclasses import dataclass
 from ..model import Pou
 from ..model.project import Language, Method, PouAction, PouKind, Property
 from ..st.il_words import looks_like_il
+from ..st.pragmas import attributed_headers, with_call_after_init, without_call_after_init
 
 _TOKEN = re.compile(
     r"""
@@ -130,6 +131,8 @@ def parse_pou_text(text: str, language: str = "st", plant: bool = False) -> Pou:
     if len(parsed.pous) != 1 or parsed.types or parsed.globals:
         raise StTextError("a POU file must hold exactly one PROGRAM, FUNCTION_BLOCK or FUNCTION", text, 0)
     pou = parsed.pous[0]
+    if pou.kind == "function_block" and _attributed(text):
+        pou = pou.model_copy(update={"declarations": with_call_after_init(pou.declarations)})
     if language == "il":
         pou = pou.model_copy(update={"language": "il"})
     if not plant:
@@ -139,6 +142,16 @@ def parse_pou_text(text: str, language: str = "st", plant: bool = False) -> Pou:
             f"a .plant.st file holds a plant, written as a PROGRAM, not a {POU_HEADER[pou.kind]}", text, 0
         )
     return pou.model_copy(update={"kind": "plant"})
+
+
+def _attributed(text: str) -> bool:
+    """Whether {attribute 'call_after_init'} stands above the file's POU header (as ``compose_pou_text`` writes it)."""
+    headers = attributed_headers(text)
+    first = next(iter(_words(text)), None)
+    if not headers or first is None:
+        return False
+    line = text.count("\n", 0, first.start) + 1
+    return (line, first.start - (text.rfind("\n", 0, first.start) + 1) + 1) in headers
 
 
 def _split_pou(text: str, words: list[Word]) -> Pou:
@@ -185,9 +198,10 @@ def compose_pou_text(pou: Pou) -> str:
     if pou.implements:
         header += f" IMPLEMENTS {', '.join(pou.implements)}"
     assert isinstance(pou.body, str), "only ST POUs are stored as text"
-    parts = [header]
-    if pou.declarations:
-        parts.append(pou.declarations)
+    attribute, declarations = without_call_after_init(pou.declarations)  # above the header, as CODESYS writes it
+    parts = [*([attribute] if attribute else []), header]
+    if declarations:
+        parts.append(declarations)
     parts += [_method_text(method) for method in pou.methods]
     parts += [_property_text(prop) for prop in pou.properties]
     parts += [_action_text(action) for action in pou.actions]
@@ -205,7 +219,9 @@ def method_header(method: Method) -> str:
 
 
 def _method_text(method: Method) -> str:
-    return "\n".join([method_header(method), *_texts(method.declarations, method.body), "END_METHOD"])
+    attribute, declarations = without_call_after_init(method.declarations)
+    lines = [*([attribute] if attribute else []), method_header(method)]
+    return "\n".join([*lines, *_texts(declarations, method.body), "END_METHOD"])
 
 
 def _action_text(action: PouAction) -> str:

@@ -61,7 +61,7 @@ import { PouActions } from "../tree/PouActions";
 import { KindPicker } from "../tree/kinds";
 import { TestFileActions } from "../tests/TestFileActions";
 import { isProjectPart, PART_LABELS, PROJECT_PARTS, type ProjectPart } from "../store/parts";
-import { gvlNameOf, isGvlTab } from "../store/gvls";
+import { gvlNameOf, isGvlTab, sharedListVariables } from "../store/gvls";
 import { GvlsTree } from "../tree/GvlsTree";
 import { PouMembers } from "../tree/PouMembers";
 import { typeRows } from "../store/types";
@@ -658,10 +658,14 @@ export function WorkspaceView() {
   const [panelsHidden, togglePanels] = useHidden("panels");
   const [help, setHelp] = useState(false);
 
-  // Online paths name a list's variable by its own name (GVL_IO.bStart is BSTART): pathKey needs the lists.
+  // Online paths name a list's variable by its own name (GVL_IO.bStart is BSTART) unless several lists declare it
+  // (GVL_A.X): pathKey needs the lists and those names.
   const gvls = project?.gvls;
   useEffect(() => {
-    setGlobalListNames((gvls ?? []).map((g) => g.name));
+    setGlobalListNames(
+      (gvls ?? []).map((g) => g.name),
+      sharedListVariables(gvls ?? []),
+    );
   }, [gvls]);
 
   // A save changes the project's POU count, revision and time: the project list shows them.

@@ -1168,10 +1168,12 @@ export const DIAGNOSTICS = {
       area: "st",
       example: "IF state = Idle THEN",
       example_language: "st",
-      example_note: "with `Idle` a value of two enumerations.",
-      fix: "name the enumeration: `state = Mode#Idle`.",
+      example_note:
+        "with `Idle` a value of two enumerations; or `state` a variable of the global variable lists `GVL_A` and `GVL_B`.",
+      fix: "name the enumeration: `state = Mode#Idle`; or the list, as CODESYS requires (its C0136): `GVL_A.state`.",
       severity: "error",
-      summary: "An enumeration value belongs to several enumerations.",
+      summary:
+        "A name is a value of several enumerations or a variable of several global variable lists.",
     },
     "ST-CALL-ARGS": {
       anchor: "st-call-args",
@@ -1426,10 +1428,10 @@ export const DIAGNOSTICS = {
         "{attribute 'pack_mode' := '1'}\nFUNCTION_BLOCK Telegram\nVAR\n    header : BYTE;\n    length : DINT;\nEND_VAR\nEND_FUNCTION_BLOCK",
       example_language: "st",
       example_note:
-        "CODESYS's `{attribute 'pack_mode' := 'N'}` packs a STRUCT when it stands above the STRUCT's TYPE declaration (before `TYPE`, or before the name inside a TYPE block). Above anything else - a function block, a variable, a STRUCT's member - it packs nothing here (LadderLab lays out no function block instance's memory), and the warning says so where it stands, so it is not taken for one that packs.",
-      fix: "move the attribute above the TYPE declaration of the STRUCT it should pack, or remove it.",
+        "CODESYS's `{attribute 'pack_mode' := 'N'}` packs a STRUCT when it stands above the STRUCT's TYPE declaration (before `TYPE`, or before the name inside a TYPE block). Above anything else - a function block, a variable, a STRUCT's member - it packs nothing here (LadderLab lays out no function block instance's memory), and the warning says so where it stands, so it is not taken for one that packs. `{attribute 'call_after_init'}` where it would call nothing, or on a method CODESYS refuses (with inputs, FB_init, a second one in a function block, without the attribute on its function block) is the error ST-PRAGMA at the attribute (docs/st.md, \"FB_init and FB_exit\").",
+      fix: "move the attribute above the TYPE declaration of the STRUCT it should pack, or remove it; put call_after_init on the first line of the declarations of both the function block and its method without inputs.",
       severity: "warning",
-      summary: "A pragma stands where it has no effect.",
+      summary: "A pragma stands where it has no effect (call_after_init: an error).",
     },
     "ST-QUALIFIED-ONLY": {
       anchor: "st-qualified-only",

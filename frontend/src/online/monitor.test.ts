@@ -161,4 +161,15 @@ describe("paths into global variable lists", () => {
     setGlobalListNames([]);
     expect(pathKey("GVL_IO.bStart")).toBe("GVL_IO.BSTART");
   });
+
+  it("keep the list of a name several lists declare, as the server names it", () => {
+    setGlobalListNames(["GVL_A", "GVL_B"], ["x"]);
+    expect(pathKey("gvl_a . x")).toBe("GVL_A.X");
+    expect(pathKey("GVL_B.x[2].f")).toBe("GVL_B.X[2].F");
+    expect(pathKey("GVL_B.xy")).toBe("XY");
+    setGlobalListNames(["GVL", "GVL_B"], ["X"]);
+    expect(pathKey("gvl.x")).toBe("GVL.X"); // a list called GVL: GVL.x is its variable
+    expect(pathKey("GVL.y")).toBe("Y");
+    setGlobalListNames([]);
+  });
 });

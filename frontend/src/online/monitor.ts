@@ -104,23 +104,27 @@ export const emptyMonitor: MonitorState = {
 /**
  * A path as the server names it in its messages: upper case, and a global without the `GVL.`
  * prefix a client may write (the server reports `GVL.Start` as `START`), nor the name of its global
- * variable list (`GVL_IO.bStart` is `BSTART`: a name is declared by one list only), so values are found.
+ * variable list (`GVL_IO.bStart` is `BSTART`), so values are found; a name several lists declare keeps its list
+ * (`GVL_A.x` is `GVL_A.X`: the name alone is no variable then).
  */
 export function pathKey(path: string): string {
-  const key = path
-    .trim()
-    .toUpperCase()
-    .replace(/^GVL\s*\.\s*/, "");
+  const upper = path.trim().toUpperCase();
+  const qualified = /^([A-Z_][A-Z0-9_]*)\s*\.\s*(?=([A-Z_][A-Z0-9_]*))/.exec(upper);
+  if (qualified && lists.has(qualified[1]!) && shared.has(qualified[2]!))
+    return `${qualified[1]}.${upper.slice(qualified[0].length)}`; // (a list called GVL too)
+  const key = upper.replace(/^GVL\s*\.\s*/, "");
   const list = /^([A-Z_][A-Z0-9_]*)\s*\.\s*/.exec(key);
-  return list && listNames().has(list[1]!) ? key.slice(list[0].length) : key;
+  return list && lists.has(list[1]!) ? key.slice(list[0].length) : key;
 }
 
 let lists = new Set<string>();
-const listNames = () => lists;
+let shared = new Set<string>();
 
-/** The names of the open project's global variable lists, for `pathKey` (the shell sets them as they change). */
-export function setGlobalListNames(names: readonly string[]): void {
+/** The names of the open project's global variable lists and the names several of them declare, for `pathKey`
+ * (the shell sets them as they change). */
+export function setGlobalListNames(names: readonly string[], sharedNames: readonly string[] = []): void {
   lists = new Set(names.map((name) => name.toUpperCase()));
+  shared = new Set(sharedNames.map((name) => name.toUpperCase()));
 }
 
 function appendLog(
@@ -240,7 +244,7 @@ export function operandPath(operand: string, instance: string, symbols: readonly
   const head = text.split(/[.[]/, 1)[0]!.toUpperCase();
   const symbol = symbols.find((s) => s.name.toUpperCase() === head);
   const global =
-    symbol?.var_class === "VAR_GLOBAL" || symbol?.var_class === "VAR_EXTERNAL" || (!symbol && listNames().has(head));
+    symbol?.var_class === "VAR_GLOBAL" || symbol?.var_class === "VAR_EXTERNAL" || (!symbol && lists.has(head));
   const path = text.replace(/\.(\d+)$/, ".%X$1"); // the server names a bit by its long form
   return pathKey(global ? path : `${instance}.${path}`);
 }

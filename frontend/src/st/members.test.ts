@@ -101,6 +101,22 @@ describe("member resolution", () => {
     expect(typeOfChain(["Start", "x"], scope)).toBeNull();
     expect(typeOfChain(["nobody"], scope)).toBeNull();
   });
+
+  it("reads a global variable list's variable qualified, also one of a name several lists declare", () => {
+    const listed = (name: string, type: string, gvl: string) => ({ ...symbol(name, type, "VAR_GLOBAL"), gvl });
+    const lists: Scope = {
+      ...scope,
+      symbols: [
+        listed("bStart", "BOOL", "GVL_IO"),
+        listed("GVL_A.n", "INT", "GVL_A"),
+        listed("GVL_B.n", "TON", "GVL_B"),
+      ],
+    };
+    expect(typeOfChain(["gvl_io", "bStart"], lists)).toBe("BOOL");
+    expect(typeOfChain(["GVL_A", "n"], lists)).toBe("INT");
+    expect(typeOfChain(["GVL_B", "N", "Q"], lists)).toBe("BOOL");
+    expect(typeOfChain(["GVL_A", "bStart"], lists)).toBeNull();
+  });
 });
 
 describe("member autocomplete (issue 9: FB instance members, struct fields)", () => {

@@ -111,11 +111,21 @@ export function membersOf(type: string, scope: Scope): readonly Member[] | null 
   return scope.structs.get(name) ?? null;
 }
 
-/** The type of `a.b.c` (names matched case-insensitively), or null when a part is unknown. */
+/** The type of `a.b.c` (names matched case-insensitively), or null when a part is unknown. `GVL_IO.x` is the
+ * variable `x` of the global variable list GVL_IO (a global whose `gvl` it is, called `GVL_IO.x` when several lists
+ * declare `x`) unless something else has the list's name. */
 export function typeOfChain(chain: readonly string[], scope: Scope): string | null {
-  const [head, ...rest] = chain;
+  const [head, ...tail] = chain;
   if (!head) return null;
+  let rest = tail;
   let type = scope.symbols.find((s) => s.name.toUpperCase() === head.toUpperCase())?.type ?? null;
+  const member = rest[0]?.toUpperCase();
+  if (type === null && member !== undefined) {
+    const list = head.toUpperCase();
+    const names = [member, `${list}.${member}`];
+    const listed = scope.symbols.find((s) => s.gvl?.toUpperCase() === list && names.includes(s.name.toUpperCase()));
+    if (listed) [type, rest] = [listed.type, rest.slice(1)];
+  }
   for (const part of rest) {
     if (type === null) return null;
     type = membersOf(type, scope)?.find((m) => m.name.toUpperCase() === part.toUpperCase())?.type ?? null;

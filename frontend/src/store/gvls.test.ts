@@ -6,6 +6,7 @@ import {
   gvlTab,
   isGvlTab,
   newGvlProblem,
+  sharedListVariables,
   withGvlChange,
   withNewGvl,
   withoutGvl,
@@ -48,5 +49,18 @@ describe("global variable lists", () => {
     const changed = withGvlChange(added, "GVL_Motors", { qualified_only: true });
     expect(changed.gvls?.[1]?.qualified_only).toBe(true);
     expect(withoutGvl(changed, "GVL_IO").gvls?.map((g) => g.name)).toEqual(["GVL_Motors"]);
+  });
+});
+
+describe("sharedListVariables", () => {
+  it("names what several lists declare (upper case), once", () => {
+    const list = (name: string, text: string) => ({ name, qualified_only: false, text });
+    const gvls = [
+      list("GVL_A", "VAR_GLOBAL\n    x : INT;\n    t : TON;\nEND_VAR"),
+      list("GVL_B", "VAR_GLOBAL\n    X : BOOL;\nEND_VAR"),
+      list("GVL_C", "VAR_GLOBAL\n    x, y : INT;\nEND_VAR"),
+    ];
+    expect(sharedListVariables(gvls)).toEqual(["X"]);
+    expect(sharedListVariables(gvls.slice(0, 1))).toEqual([]);
   });
 });

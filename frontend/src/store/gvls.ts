@@ -2,6 +2,7 @@
 // POU name never holds a ':'), edited with the global variables' editor; the pure operations of the tree's
 // add, rename and delete live here. A diagnostic of one has the file `gvls/<name>`.
 import type { Diagnostic, GlobalVariableList, Project } from "../generated/api";
+import { parseDeclarations } from "../iec/declarations";
 import { identifierProblem } from "../iec/identifier";
 
 const PREFIX = "gvl:";
@@ -48,3 +49,15 @@ export const withoutGvl = (project: Project, name: string): Project => ({
   ...project,
   gvls: (project.gvls ?? []).filter((g) => g.name !== name),
 });
+
+/** The variable names (upper case) that several lists declare: each is `LIST.x` then, online too (docs/st.md). A
+ * list whose text the declarations table cannot read counts with no names. */
+export function sharedListVariables(gvls: readonly GlobalVariableList[]): string[] {
+  const seen = new Map<string, number>();
+  for (const list of gvls) {
+    const parsed = parseDeclarations(list.text ?? "");
+    const names = new Set(parsed.ok ? parsed.rows.map((row) => row.name.toUpperCase()) : []);
+    for (const name of names) seen.set(name, (seen.get(name) ?? 0) + 1);
+  }
+  return [...seen].filter(([, count]) => count > 1).map(([name]) => name);
+}

@@ -32,7 +32,7 @@ from .body import NETWORK_GAP, Counter, write_network_list
 from .configuration import write_instances
 from .fbd_export import FbdExporter
 from .ld_export import LdExporter
-from .methods import oo_attributes, oo_texts, write_inheritance, write_interfaces, write_methods
+from .methods import oo_attributes, oo_texts, write_call_after_init, write_inheritance, write_interfaces, write_methods
 from .sfc_export import write_sfc_pou
 from .vars import parse_type_text, write_data_type, write_documentation, write_type, write_var_list
 from .xml_io import (
@@ -142,6 +142,7 @@ class _Exporter:
             {"declarations": pou.declarations, **oo_texts(pou)},
         )
         write_inheritance(add, pou)
+        write_call_after_init(interface, pou.declarations)
         write_documentation(interface, pou.declarations)
         if isinstance(pou.body, SfcBody):
             write_sfc_pou(node, pou.body, lambda holder, networks: self.diagram(holder, networks, pou.name))

@@ -55,12 +55,14 @@ from .methods import (
     METHOD_DATA,
     PLAINTEXT_DATA,
     PROPERTY_DATA,
+    call_after_init,
     read_extends,
     read_fb_modifiers,
     read_implements,
     read_interfaces,
     read_methods,
     read_properties,
+    with_attribute,
 )
 from .sfc_import import SfcImporter
 from .vars import ATTRIBUTES_DATA, KIND_BY_LIST, VarReader, parse_type_text, write_data_type, write_type, write_var_list
@@ -90,7 +92,7 @@ BACHMANN = "www.bachmann.at/plc/plcopenxml"
 POU_DATA = "http://www.3s-software.com/plcopenxml/pou"
 DATATYPE_DATA = "http://www.3s-software.com/plcopenxml/datatype"
 #: The CODESYS attribute LadderLab reads from an element's attributes entry, by the element's tag
-_READ_ATTRIBUTE = {"dataType": "pack_mode", "globalVars": QUALIFIED_ONLY}
+_READ_ATTRIBUTE = {"dataType": "pack_mode", "globalVars": QUALIFIED_ONLY, "interface": "call_after_init"}
 _UNDERSTOOD = {
     (INPUTASSIGNMENTS_DATA, "InputAssignments"),  # an instance's FB_init arguments, read with it (instance_args.py)
     (CFC_DATA, "CFC"),  # a POU's chart (codesys_cfc.py); a method's, action's or transition's is reported
@@ -324,6 +326,7 @@ class _Importer:
             declarations, return_type = self.text_declaration(interface, declarations, return_type)
         if KIND[pou_type] == "function" and return_type is None:
             r.report("PLCOPEN-POU", f"function '{name}' has no return type", node, pou=name)
+        declarations = with_attribute(declarations, call_after_init(node, interface, r))
         oo = ours.attrib if ours is not None else {}
         return Pou(
             name=name,

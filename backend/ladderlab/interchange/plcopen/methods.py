@@ -27,7 +27,7 @@ from collections.abc import Callable
 from ...model.project import Accessor, Method, MethodAccess, Pou, Property
 from ...st import ast
 from ...st.parser import parse_declarations, parse_source
-from ...st.pragmas import CALL_AFTER_INIT_REFUSED
+from ...st.pragmas import head_call_after_init, with_call_after_init
 from ...st.printer import print_declarations, print_type
 from ...storage.st_text import method_header
 from .vars import ATTRIBUTES_DATA, parse_type_text, write_documentation, write_type, write_var_list
@@ -194,6 +194,7 @@ def _write_method(
     for block in blocks:
         write_var_list(interface, block)
     _write_access(interface, access)
+    write_call_after_init(interface, declarations)
     write_documentation(interface, declarations)
     plain = sub(sub(element, "addData"), "data", {"name": PLAINTEXT_DATA, "handleUnknown": "implementation"})
     formatted_text(plain, "InterfaceAsPlainText", header)
@@ -340,8 +341,8 @@ def read_methods(
                 continue
             _report_implicit(element, pou, reader)
             interface = reader.child(element, "interface")
-            _report_call_after_init(element, interface, pou, reader)
             text, return_type = declarations(interface) if interface is not None else ("", None)
+            text = with_attribute(text, call_after_init(element, interface, reader))
             methods.append(
                 Method(
                     name=name,
@@ -373,23 +374,41 @@ def _report_implicit(method: ET.Element, pou: str, reader: Reader) -> None:
         )
 
 
-def _report_call_after_init(method: ET.Element, interface: ET.Element | None, pou: str, reader: Reader) -> None:
-    """The error IR-UNSUPPORTED at a method CODESYS calls after an instance's initialisation (its attribute
-    'call_after_init' in CODESYS's attributes entry, or the pragma in its declaration text as TwinCAT writes it):
-    LadderLab would never call it (st/pragmas.py)."""
-    holders = [method, *([interface] if interface is not None else [])]
+def call_after_init(holder: ET.Element, interface: ET.Element | None, reader: Reader) -> bool:
+    """Whether CODESYS marked a POU or method ``{attribute 'call_after_init'}``: the attribute in CODESYS's attributes
+    entry of it or of its interface, or the pragma in its declaration text as TwinCAT writes it."""
+    holders = [holder, *([interface] if interface is not None else [])]
     names = {
         (attribute.get("Name") or "").lower()
-        for holder in holders
-        for data in data_entries(holder, reader, ATTRIBUTES_DATA)
+        for one in holders
+        for data in data_entries(one, reader, ATTRIBUTES_DATA)
         for attributes in reader.children(data, "Attributes")
         for attribute in reader.children(attributes, "Attribute")
     }
-    texts = _entries(method, reader, PLAINTEXT_DATA, "InterfaceAsPlainText") + reader.children(
-        method, "InterfaceAsPlainText"
+    texts = _entries(holder, reader, PLAINTEXT_DATA, "InterfaceAsPlainText") + reader.children(
+        holder, "InterfaceAsPlainText"
     )
-    if "call_after_init" in names or any("'call_after_init'" in text_content(t) for t in texts):
-        reader.report("IR-UNSUPPORTED", CALL_AFTER_INIT_REFUSED, method, pou=pou)
+    return "call_after_init" in names or any("'call_after_init'" in text_content(t) for t in texts)
+
+
+def with_attribute(declarations: str, marked: bool) -> str:
+    """A POU's or method's declarations text headed by {attribute 'call_after_init'} when CODESYS marked it so (the
+    model keeps the attribute there: st/call_after_init.py)."""
+    return with_call_after_init(declarations) if marked and head_call_after_init(declarations) is None else declarations
+
+
+def write_call_after_init(interface: ET.Element, declarations: str) -> None:
+    """CODESYS's attributes entry for {attribute 'call_after_init'} heading ``declarations``, in the interface's
+    addData (made when it has none yet: it comes before the documentation)."""
+    if head_call_after_init(declarations) is None:
+        return
+    add = next((c for c in interface if isinstance(c.tag, str) and local(c) == "addData"), None)
+    data = sub(
+        add if add is not None else sub(interface, "addData"),
+        "data",
+        {"name": ATTRIBUTES_DATA, "handleUnknown": "implementation"},
+    )
+    sub(sub(data, "Attributes"), "Attribute", {"Name": "call_after_init", "Value": ""})
 
 
 def read_extends(interface: ET.Element | None, reader: Reader) -> str | None:
