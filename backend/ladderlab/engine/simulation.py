@@ -53,7 +53,19 @@ from .debug import STEP_ENDS, Debugger, Halt
 from .doubles import Mocks
 from .frames import FramePlan, frame_plan
 from .inputs import AppliedInput, Injection, InputEvent, InputRefused, immediate, injection
-from .paths import Location, LocationReader, NoTarget, Resolver, Roots, UnknownPath, coerce_for, leaves, plain
+from .paths import (
+    Getter,
+    GetterFault,
+    Location,
+    LocationReader,
+    NoTarget,
+    Resolver,
+    Roots,
+    UnknownPath,
+    coerce_for,
+    leaves,
+    plain,
+)
 from .process_image import AREA_ORDER, IoPoint, ProcessImage, key_of, located_address, view_kind
 from .state import SimState, data_of, holds_references, restore_into, restore_list
 from .tasks import DEFAULT_WATCHDOG_S, Schedule, Task, task_table
@@ -63,6 +75,15 @@ from .tasks import DEFAULT_WATCHDOG_S, Schedule, Task, task_table
 SAMPLE_EVERY = 16
 #: The slot types that may hold a user FB instance, whose path ``_instance_paths`` records
 _HOLDERS = (t.FbInstance, t.Array, t.Struct)
+
+
+def drained(generator: GeneratorType) -> object:
+    """What a debug-variant call returns, run to its end (its pause points pass: it runs outside any scan)."""
+    while True:
+        try:
+            next(generator)
+        except StopIteration as stop:
+            return stop.value
 
 
 @dataclass
@@ -126,7 +147,7 @@ class Simulation:
         self._schedule = Schedule(self._tasks)
         self._resolver = Resolver(self._context)
         self._attached: dict[str, tuple[object, str]] = {}  # outside the tasks (attach): name -> (instance, POU)
-        self._roots = Roots(self._ns, self._attached)
+        self._roots = Roots(self._ns, self._attached, self._run_getter)
         self._image: ProcessImage = self._ns["ll_image"]
         self._has_inputs, self._has_outputs = bool(self._image.inputs), bool(self._image.outputs)  # sized once
         self._triggers = {task.name: self._resolver.resolve(task.single) for task in self._tasks if task.single}
@@ -517,6 +538,38 @@ class Simulation:
                 places=self.compiled.program.places,
             )
         )
+
+    def _run_getter(self, path: str, getter: Getter, reference: tuple[object, object]) -> object:
+        """What the GET of a property monitored as 'call' returns for the instance at ``reference``, run now: only
+        between scans (never in a halted one), under a task's watchdog; a fault in it is NoTarget with the located
+        fault (the program's tasks go on)."""
+        if self.halted is not None or self._scan is not None:
+            raise NoTarget(f"{path}: the scan is halted in the middle, and a property's GET runs only between scans")
+        if getter.dispatched:  # an override of the GET: the one of the instance's function block
+            instance = reference[0][reference[1]]  # type: ignore[index]  # an instance's container
+            function = self._ns[names.dispatch_table(getter.function)][type(instance)]
+        else:
+            function = self._ns[names.function(getter.function)]
+        now = self._ns["ll_now"]
+        self._watchdog.arm(min((task.watchdog_s for task in self._tasks), default=DEFAULT_WATCHDOG_S))
+        try:
+            result = function(reference)
+            if isinstance(result, GeneratorType):  # the debug variant: run it through (no halt outside a scan)
+                result = drained(result)
+            return result
+        except Exception as error:
+            fault = make_fault(
+                error,
+                self.compiled.generated,
+                self.compiled.filename,
+                self._ns,
+                task="monitoring",
+                time_ms=now,
+                scan=self.scan_count,
+                instance_path=self._instance_path,
+                places=self.compiled.program.places,
+            )
+            raise GetterFault(f"{path}: its GET faulted: {fault.text()}", fault) from None
 
     # ------------------------------------------------------------------ outside the task configuration (tests)
 
