@@ -141,8 +141,9 @@ def test_a_derived_block_inherits_the_variable_and_its_override_of_call_runs():
 
 def test_without_the_attribute_a_property_still_has_no_path():
     sim = run(TANK)
-    with pytest.raises(UnknownPath, match="MAIN.T.Hidden is a PROPERTY of TANK: its value is what its GET returns"):
+    with pytest.raises(UnknownPath) as refused:
         sim.read("Main.t.Hidden")
+    assert str(refused.value).startswith("MAIN.T.Hidden is a PROPERTY of TANK: its value is what its GET returns")
 
 
 def test_call_never_runs_in_a_halted_scan():
@@ -242,8 +243,9 @@ END_PROGRAM
             "only a property of a simple type or a pointer (CODESYS C0344): the attribute is ignored",
         )
     ]
-    with pytest.raises(UnknownPath, match="is a PROPERTY of HOLDER"):
+    with pytest.raises(UnknownPath) as refused:
         run(text).read("Main.h.Both")
+    assert str(refused.value).startswith("MAIN.H.Both is a PROPERTY of HOLDER")
 
 
 def test_the_st_text_writes_the_attribute_above_property_and_reads_it_back():
