@@ -1,0 +1,120 @@
+"""Properties marked {attribute 'monitoring'} online over the real websocket (issue 25): watched, traced, refused
+when written, and a faulting GET as a located log entry with no value (never a wrong one). Expected values follow
+from the program text by hand and CODESYS's online help ("Attribute: monitoring": 'variable' shows the value of
+the last Get or Set, read only; 'call' runs the Get to show it)."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import pytest
+from fastapi.testclient import TestClient
+
+from ladderlab.simulation.registry import SimulationRegistry
+from ladderlab.st.project_text import source_to_project
+from ladderlab.storage import Workspace
+
+from .test_simulations_support import log_of, of_type, recv, recv_until, registry, subscribe
+from .test_trace import collect, cycles, done
+
+__all__ = ["registry"]  # fixture used below
+
+SOURCE = """
+FUNCTION_BLOCK Tank
+VAR amount : INT; END_VAR
+{attribute 'monitoring' := 'variable'}
+PROPERTY Level : INT
+GET
+Level := amount * 10;
+END_GET
+SET
+amount := Level;
+END_SET
+END_PROPERTY
+{attribute 'monitoring' := 'call'}
+PROPERTY Share : INT
+GET
+Share := 100 / amount;
+END_GET
+END_PROPERTY
+END_FUNCTION_BLOCK
+PROGRAM Main
+VAR t : Tank; n : INT; x : INT; END_VAR
+n := n + 1;
+IF n >= 2 THEN t.Level := n; END_IF;
+IF n >= 3 THEN x := t.Level; END_IF;
+END_PROGRAM
+"""
+FAULT_LINE = SOURCE.splitlines().index("Share := 100 / amount;") + 1
+
+
+@pytest.fixture
+def sim_id(client: TestClient, workspace: Workspace, registry: SimulationRegistry) -> str:
+    project, diagnostics = source_to_project(SOURCE, "monitored")
+    assert project is not None, diagnostics
+    workspace.create(project)
+    response = client.post("/api/projects/monitored/simulations")
+    assert response.status_code == 201, response.text
+    return str(response.json()["id"])
+
+
+def values_of(ws: Any, scan: int) -> dict[str, Any]:
+    message, _ = recv_until(ws, of_type("values", scan=scan))
+    return dict(message["changed"])
+
+
+def test_both_modes_are_watched_scan_by_scan_and_a_faulting_get_is_logged_where_it_faults(
+    client: TestClient, sim_id: str
+) -> None:
+    """Scan 2: SET 2 (Level 2), Share 100 / 2; scan 3: SET 3 then GET 30 (Level 30), Share 100 / 3 = 33."""
+    with client.websocket_connect(f"/api/simulations/{sim_id}/ws") as ws:
+        recv(ws)
+        ws.send_json({"type": "subscribe", "paths": ["Main.t.Level", "Main.t.Share"], "interval_ms": 20})
+        first, before = recv_until(ws, of_type("values"))
+        assert first["changed"] == {"MAIN.T.Level": 0, "MAIN.T.Share": None}  # amount is 0: its GET faults
+        assert first["types"]["MAIN.T.Share"] == {"name": "INT", "names": None}
+        logs = [m for m in before if log_of("fault")(m)]  # logged as the frame was read, once
+        assert len(logs) == 1
+        log = logs[0]
+        assert log["level"] == "error"
+        assert log["message"].startswith(
+            f"MAIN.T.Share: its GET faulted: division by zero: 100 / 0 at POU TANK.SHARE.GET, line {FAULT_LINE} "
+            "column 1, task monitoring, scan 0"
+        )
+        assert (log["at"]["pou"], log["at"]["line"]) == ("TANK.SHARE.GET", FAULT_LINE)
+        ws.send_json({"type": "single_cycle"})
+        assert values_of(ws, 1) == {}
+        ws.send_json({"type": "single_cycle"})
+        assert values_of(ws, 2) == {"MAIN.T.Level": 2, "MAIN.T.Share": 50}
+        ws.send_json({"type": "single_cycle"})
+        assert values_of(ws, 3) == {"MAIN.T.Level": 30, "MAIN.T.Share": 33}
+
+
+def test_writing_a_monitored_property_is_refused_with_the_reason(client: TestClient, sim_id: str) -> None:
+    with client.websocket_connect(f"/api/simulations/{sim_id}/ws") as ws:
+        recv(ws)
+        subscribe(ws, ["Main.n"])
+        ws.send_json({"type": "write", "path": "Main.t.Level", "value": 1})
+        error, _ = recv_until(ws, of_type("error"))
+        assert error["message"] == (
+            "MAIN.T.Level cannot be written: a property monitored as 'variable' shows the value of its last GET or "
+            "SET, and is read only (CODESYS); assign the property in the program or write the variables its SET "
+            "writes"
+        )
+        ws.send_json({"type": "write", "path": "Main.t.Share", "value": 1})
+        error, _ = recv_until(ws, of_type("error"))
+        assert error["message"] == (
+            "MAIN.T.Share cannot be written: a property monitored as 'call' is read by running its GET; it is not "
+            "written online (a SET is code)"
+        )
+
+
+def test_both_modes_are_traced_and_a_faulting_get_leaves_a_gap(client: TestClient, sim_id: str) -> None:
+    with client.websocket_connect(f"/api/simulations/{sim_id}/ws") as ws:
+        recv(ws)
+        subscribe(ws, [], interval_ms=20)
+        ws.send_json({"type": "trace_start", "paths": ["Main.t.Level", "Main.t.Share"], "samples": 3})
+        cycles(ws, 3)
+        merged, _ = collect(ws, done)
+    assert merged["scans"] == [1, 2, 3]
+    assert merged["values"] == {"MAIN.T.Level": [0, 2, 30], "MAIN.T.Share": [None, 50, 33]}
