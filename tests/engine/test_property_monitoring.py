@@ -102,7 +102,7 @@ def test_variable_is_read_only():
     with pytest.raises(ValueError) as refused:
         sim.write("Main.t.Level", 3)
     assert str(refused.value) == (
-        "MAIN.T.Level cannot be written: a property monitored as 'variable' shows the value of its last GET or SET, "
+        "MAIN.T.LEVEL cannot be written: a property monitored as 'variable' shows the value of its last GET or SET, "
         "and is read only (CODESYS); assign the property in the program or write the variables its SET writes"
     )
 
@@ -124,7 +124,7 @@ def test_a_fault_in_the_get_is_a_located_error_for_that_value_and_the_program_ru
         sim.read("Main.t.Share")
     message = str(fault.value)
     assert message.startswith(
-        "MAIN.T.Share: its GET faulted: division by zero: 100 / 0 at POU TANK.SHARE.GET, "
+        "MAIN.T.SHARE: its GET faulted: division by zero: 100 / 0 at POU TANK.SHARE.GET, "
         f"line {line('Share := 100 / amount;')} column 1"
     )
     assert sim.faults == []  # the tasks were not stopped
@@ -158,7 +158,7 @@ def test_call_never_runs_in_a_halted_scan():
     with pytest.raises(NoTarget) as refused:
         sim.read("Main.t.Share")
     assert str(refused.value) == (
-        "MAIN.T.Share: the scan is halted in the middle, and a property's GET runs only between scans"
+        "MAIN.T.SHARE: the scan is halted in the middle, and a property's GET runs only between scans"
     )
     assert sim.read("Main.t.Level") == 4  # 'variable' reads its implicit variable, halted too
 

@@ -71,23 +71,23 @@ def test_both_modes_are_watched_scan_by_scan_and_a_faulting_get_is_logged_where_
         recv(ws)
         ws.send_json({"type": "subscribe", "paths": ["Main.t.Level", "Main.t.Share"], "interval_ms": 20})
         first, before = recv_until(ws, of_type("values"))
-        assert first["changed"] == {"MAIN.T.Level": 0, "MAIN.T.Share": None}  # amount is 0: its GET faults
-        assert first["types"]["MAIN.T.Share"] == {"name": "INT", "names": None}
+        assert first["changed"] == {"MAIN.T.LEVEL": 0, "MAIN.T.SHARE": None}  # amount is 0: its GET faults
+        assert first["types"]["MAIN.T.SHARE"] == {"name": "INT", "names": None}
         logs = [m for m in before if log_of("fault")(m)]  # logged as the frame was read, once
         assert len(logs) == 1
         log = logs[0]
         assert log["level"] == "error"
         assert log["message"].startswith(
-            f"MAIN.T.Share: its GET faulted: division by zero: 100 / 0 at POU TANK.SHARE.GET, line {FAULT_LINE} "
+            f"MAIN.T.SHARE: its GET faulted: division by zero: 100 / 0 at POU TANK.SHARE.GET, line {FAULT_LINE} "
             "column 1, task monitoring, scan 0"
         )
         assert (log["at"]["pou"], log["at"]["line"]) == ("TANK.SHARE.GET", FAULT_LINE)
         ws.send_json({"type": "single_cycle"})
         assert values_of(ws, 1) == {}
         ws.send_json({"type": "single_cycle"})
-        assert values_of(ws, 2) == {"MAIN.T.Level": 2, "MAIN.T.Share": 50}
+        assert values_of(ws, 2) == {"MAIN.T.LEVEL": 2, "MAIN.T.SHARE": 50}
         ws.send_json({"type": "single_cycle"})
-        assert values_of(ws, 3) == {"MAIN.T.Level": 30, "MAIN.T.Share": 33}
+        assert values_of(ws, 3) == {"MAIN.T.LEVEL": 30, "MAIN.T.SHARE": 33}
 
 
 def test_writing_a_monitored_property_is_refused_with_the_reason(client: TestClient, sim_id: str) -> None:
@@ -97,14 +97,14 @@ def test_writing_a_monitored_property_is_refused_with_the_reason(client: TestCli
         ws.send_json({"type": "write", "path": "Main.t.Level", "value": 1})
         error, _ = recv_until(ws, of_type("error"))
         assert error["message"] == (
-            "MAIN.T.Level cannot be written: a property monitored as 'variable' shows the value of its last GET or "
+            "MAIN.T.LEVEL cannot be written: a property monitored as 'variable' shows the value of its last GET or "
             "SET, and is read only (CODESYS); assign the property in the program or write the variables its SET "
             "writes"
         )
         ws.send_json({"type": "write", "path": "Main.t.Share", "value": 1})
         error, _ = recv_until(ws, of_type("error"))
         assert error["message"] == (
-            "MAIN.T.Share cannot be written: a property monitored as 'call' is read by running its GET; it is not "
+            "MAIN.T.SHARE cannot be written: a property monitored as 'call' is read by running its GET; it is not "
             "written online (a SET is code)"
         )
 
@@ -117,4 +117,4 @@ def test_both_modes_are_traced_and_a_faulting_get_leaves_a_gap(client: TestClien
         cycles(ws, 3)
         merged, _ = collect(ws, done)
     assert merged["scans"] == [1, 2, 3]
-    assert merged["values"] == {"MAIN.T.Level": [0, 2, 30], "MAIN.T.Share": [None, 50, 33]}
+    assert merged["values"] == {"MAIN.T.LEVEL": [0, 2, 30], "MAIN.T.SHARE": [None, 50, 33]}

@@ -427,11 +427,11 @@ class Resolver:
         """A monitored property of the instance at ``keys``: its implicit variable ('variable'), or its GET run
         when read ('call'); neither is written online, and its value is one value (no member, element or part)."""
         if rest:
-            raise ValueError(f"{path}.{prop.name} is a property shown online: watch it whole, not a part of it")
+            raise ValueError(f"{path}.{prop.name.upper()} is a property shown online: watch it whole, not a part of it")
         if prop.mode == "variable":
             path, ty, keys = self._member(path, ty, keys, prop.name)
             return Location(path, ty, root, keys, refusal=_LAST_VALUE)
-        path = f"{path}.{prop.name}"
+        path = f"{path}.{prop.name.upper()}"  # (as the implicit variable of 'variable' is named)
         assert prop.getter is not None  # (st/monitoring.py: 'call' without a GET is ignored)
         getter = Getter(prop.getter, prop.getter in self.context.program.dispatch)
         return Location(path, prop.type, root, (*keys, getter), refusal=_CALLED)

@@ -1,9 +1,9 @@
 """What CODESYS's ``{attribute 'monitoring'}`` on a PROPERTY (st/monitoring.py) makes the engine run.
 
-``'variable'``: an implicit variable of the function block (or program), named like the property, that its GET
-stores the value it returns into before it returns and its SET stores the value written into as it starts ("an
-implicit variable ... assigned the current property value when the application calls the Set or Get method"); a
-path reads it, read only. ``'call'``: nothing is added; a path runs the GET between scans (engine/paths.py).
+``'variable'``: an implicit variable of the function block (or program), named like the property (upper case, as
+every slot is), that its GET stores the value it returns into before it returns and its SET stores the value written
+into as it starts ("an implicit variable ... assigned the current property value when the application calls the Set
+or Get method"); a path reads it, read only. ``'call'``: nothing is added; a path runs the GET between scans (engine/paths.py).
 """
 
 from __future__ import annotations
@@ -26,7 +26,7 @@ def monitored_slots(info: PouInfo, ctx: PouContext) -> list[Slot]:
         found = monitored_property(info, name)
         if found is not None and found[1] == "variable":
             try:
-                slots.append(Slot(found[0].name, "VAR", ctx.types.type_of(found[0].type)))
+                slots.append(Slot(found[0].name.upper(), "VAR", ctx.types.type_of(found[0].type)))
             except LoweringError:  # the type is reported where the property declares it
                 continue
     return slots
