@@ -3,7 +3,8 @@
 ``'variable'``: an implicit variable of the function block (or program), named like the property (upper case, as
 every slot is), that its GET stores the value it returns into before it returns and its SET stores the value written
 into as it starts ("an implicit variable ... assigned the current property value when the application calls the Set
-or Get method"); a path reads it, read only. ``'call'``: nothing is added; a path runs the GET between scans (engine/paths.py).
+or Get method"); a path reads it, read only. ``'call'``: nothing is added; a path runs the GET between scans
+(engine/paths.py).
 """
 
 from __future__ import annotations
