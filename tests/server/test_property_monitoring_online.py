@@ -118,3 +118,28 @@ def test_both_modes_are_traced_and_a_faulting_get_leaves_a_gap(client: TestClien
         merged, _ = collect(ws, done)
     assert merged["scans"] == [1, 2, 3]
     assert merged["values"] == {"MAIN.T.LEVEL": [0, 2, 30], "MAIN.T.SHARE": [None, 50, 33]}
+
+
+def test_the_instance_tree_lists_the_monitored_properties_after_the_variables(
+    client: TestClient, workspace: Workspace
+) -> None:
+    """CODESYS's online view of an FB instance shows its monitored properties besides its variables."""
+    project, _ = source_to_project(SOURCE.replace("END_PROPERTY\nEND_FUNCTION_BLOCK", HIDDEN), "tree")
+    workspace.create(project)
+    response = client.get("/api/projects/tree/variables", params={"path": "Main.t"})
+    assert response.status_code == 200, response.text
+    children = [(c["name"], c["path"], c["type"], c["var_class"]) for c in response.json()["children"]]
+    assert children == [
+        ("amount", "Main.t.amount", "INT", "VAR"),
+        ("Level", "Main.t.Level", "INT", "PROPERTY"),
+        ("Share", "Main.t.Share", "INT", "PROPERTY"),
+    ]
+
+
+HIDDEN = """END_PROPERTY
+PROPERTY Hidden : INT
+GET
+Hidden := amount;
+END_GET
+END_PROPERTY
+END_FUNCTION_BLOCK"""
