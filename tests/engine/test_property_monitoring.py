@@ -17,6 +17,7 @@ from ladderlab.engine.paths import GetterFault, NoTarget, UnknownPath
 from ladderlab.engine.simulation import Simulation
 from ladderlab.ir.lower_project import lower_project
 from ladderlab.simulation.build import build_project
+from ladderlab.simulation.conditions import BadCondition, parse_condition
 from ladderlab.st.project_text import source_to_project
 from ladderlab.storage.st_text import compose_pou_text
 
@@ -263,3 +264,21 @@ def test_the_st_text_writes_the_attribute_above_property_and_reads_it_back():
         ("Hidden", "", None),
     ]
     assert [p.get.body.strip() for p in again.pous[0].properties] == [p.get.body.strip() for p in tank.properties]
+
+
+def test_a_run_until_condition_reads_variable_and_refuses_call():
+    """'variable' is a value the scan left (the condition holds after scan 4: Level 7); 'call' would run its GET
+    after every scan."""
+    sim = run(TANK)
+    until = parse_condition("Main.t.Level >= 7", sim)
+    held = []
+    for _ in range(5):
+        sim.cycle(1)
+        held.append(until.holds(sim))
+    assert held == [False, False, False, True, True]
+    with pytest.raises(BadCondition) as refused:
+        parse_condition("Main.t.Share > 3", sim)
+    assert str(refused.value) == (
+        "'Main.t.Share > 3': MAIN.T.SHARE is a property monitored as 'call', read by running its GET: a condition is "
+        "checked after every scan, and would run it each time; use 'variable' or the variables its GET reads"
+    )

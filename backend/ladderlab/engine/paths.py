@@ -169,6 +169,11 @@ class Location:
         return not is_composite(self.type)
 
     @property
+    def called(self) -> bool:
+        """It is a property monitored as 'call': reading it runs code (its GET), between scans only."""
+        return isinstance(self.keys[-1], Getter)
+
+    @property
     def through_pointer(self) -> bool:
         """It is reached through a pointer or reference (``p^``), so it may name no variable at times."""
         return any(isinstance(key, _Pointee) for key in self.keys)

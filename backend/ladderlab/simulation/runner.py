@@ -939,7 +939,14 @@ class SimRunner:
             raise CommandError("bad_value", f"direction is -1 (back) or 1 (forward), not {direction}")
         self._in_history(scan)
         if path is not None:
-            found = history.changed(self._location(path).path, scan - 1, direction)
+            location = self._location(path)
+            if location.called:
+                raise CommandError(
+                    "bad_path",
+                    f"{location.path} is a property monitored as 'call': finding its changes would run its GET on "
+                    "every recorded scan; use 'variable' (its last value is recorded) or the variables its GET reads",
+                )
+            found = history.changed(location.path, scan - 1, direction)
         else:
             try:
                 until = parse_condition(condition or "", self.sim)
