@@ -143,3 +143,20 @@ Hidden := amount;
 END_GET
 END_PROPERTY
 END_FUNCTION_BLOCK"""
+
+
+def test_the_history_finds_a_variable_propertys_changes_and_refuses_a_called_one(
+    client: TestClient, sim_id: str
+) -> None:
+    """Level after scans 1..3: 0, 2, 30 (SET 2; SET 3 then GET 30)."""
+    for _ in range(3):
+        client.post(f"/api/simulations/{sim_id}/cycle")
+    find = f"/api/simulations/{sim_id}/history/find"
+    assert client.get(find, params={"path": "Main.t.Level", "scan": 1}).json() == {"scan": 2}
+    assert client.get(find, params={"condition": "Main.t.Level >= 30", "scan": 1}).json() == {"scan": 3}
+    refused = client.get(find, params={"path": "Main.t.Share", "scan": 1})
+    assert refused.status_code == 422
+    assert refused.json()["detail"]["message"] == (
+        "MAIN.T.SHARE is a property monitored as 'call': finding its changes would run its GET on every recorded "
+        "scan; use 'variable' (its last value is recorded) or the variables its GET reads"
+    )
