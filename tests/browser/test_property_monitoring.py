@@ -1,5 +1,5 @@
-"""A PROPERTY with CODESYS's {attribute 'monitoring'} online in the browser (issue 25): its value in the watch list
-and inline in the ST editor where the program names it, changing scan by scan - 'variable' the value of its last GET
+"""A PROPERTY with CODESYS's {attribute 'monitoring'} online in the browser (issue 25): its value in the watch list,
+inline in the ST editor where the program names it and in the Variables view's instance, changing scan by scan - 'variable' the value of its last GET
 or SET, 'call' what its GET returns between scans (CODESYS's online help, "Attribute: monitoring"). The values are
 worked out by hand from the program text. Screenshots go to tests/browser/artifacts/.
 """
@@ -72,3 +72,14 @@ def test_a_monitored_propertys_value_changes_online_in_the_watch_list_and_inline
     expect(share).to_have_text("102")
     expect(values).to_have_text(["2", "2", "2", "2", "102", "102"])
     page.screenshot(path=str(ARTIFACTS / "property-monitoring-online.png"))
+    # The Variables view: the instance lists its monitored properties after its variables, with their values
+    page.get_by_role("tab", name="Variables").click()
+    table = page.get_by_role("table", name="Variables of MAIN")
+    table.get_by_role("button", name="Expand Main.t").click()
+    expect(table.locator('tr[data-path="MAIN.T.AMOUNT"] td.watch-value')).to_have_text("2")
+    expect(table.locator('tr[data-path="MAIN.T.LEVEL"] td.watch-value')).to_have_text("2")
+    expect(table.locator('tr[data-path="MAIN.T.SHARE"] td.watch-value')).to_have_text("102")
+    page.get_by_role("button", name="Single cycle").click()
+    expect(table.locator('tr[data-path="MAIN.T.LEVEL"] td.watch-value')).to_have_text("3")
+    expect(table.locator('tr[data-path="MAIN.T.SHARE"] td.watch-value')).to_have_text("103")
+    page.screenshot(path=str(ARTIFACTS / "property-monitoring-variables.png"))
