@@ -68,6 +68,25 @@ describe("variable occurrences (issue 9: ST online values inline)", () => {
     ]);
   });
 
+  it("shows a monitored property named bare or through THIS^ in its function block's own code (issue 25)", () => {
+    const self = {
+      name: "THIS^",
+      kind: "THIS^",
+      methodsOf: null,
+      members: [
+        { name: "amount", type: "INT", kind: "VAR" },
+        { name: "Level", type: "INT", kind: "PROPERTY", monitored: true },
+        { name: "Hidden", type: "INT", kind: "PROPERTY" },
+      ],
+    };
+    const own: Scope = { ...scope, symbols: [symbol("amount", "INT")], qualifiers: new Map([["THIS^", self]]) };
+    expect(variableOccurrences("amount := Level + THIS^.Level + Hidden;", own, "MAIN.T").map(at)).toEqual([
+      "amount@0-6 MAIN.T.AMOUNT INT",
+      "Level@10-15 MAIN.T.LEVEL INT",
+      "THIS^.Level@18-29 MAIN.T.LEVEL INT",
+    ]);
+  });
+
   it("shows a variable named like an SFC word (OSCAT's step) outside an SFC body", () => {
     const named: Scope = { ...scope, symbols: [symbol("step", "INT"), symbol("Action", "BOOL")] };
     const text = "Step := step + 1;\nIF Action THEN step := 0; END_IF;";

@@ -114,14 +114,18 @@ export function membersOf(type: string, scope: Scope): readonly Member[] | null 
 }
 
 /** The type of `a.b.c` (names matched case-insensitively; a member may be an instance's monitored PROPERTY, which has
- * a value online), or null when a part is unknown. `GVL_IO.x` is the
+ * a value online, and so may a bare name in the code of its own function block), or null when a part is unknown. `GVL_IO.x` is the
  * variable `x` of the global variable list GVL_IO (a global whose `gvl` it is, called `GVL_IO.x` when several lists
  * declare `x`) unless something else has the list's name. */
 export function typeOfChain(chain: readonly string[], scope: Scope): string | null {
   const [head, ...tail] = chain;
   if (!head) return null;
   let rest = tail;
-  let type = scope.symbols.find((s) => s.name.toUpperCase() === head.toUpperCase())?.type ?? null;
+  const own = (m: Member) => m.monitored && m.name.toUpperCase() === head.toUpperCase(); // a bare property, THIS^'s
+  let type =
+    scope.symbols.find((s) => s.name.toUpperCase() === head.toUpperCase())?.type ??
+    scope.qualifiers?.get("THIS^")?.members.find(own)?.type ??
+    null;
   const member = rest[0]?.toUpperCase();
   if (type === null && member !== undefined) {
     const list = head.toUpperCase();
