@@ -193,8 +193,8 @@ def test_a_programs_property_is_shown_too():
 
 
 def diagnostics(text: str) -> list[tuple[str, str, str | None, int | None, int | None, str]]:
-    project, problems = source_to_project(text, "monitoring")
-    assert project is not None and problems == []
+    project, _ = source_to_project(text, "monitoring")
+    assert project is not None
     return [
         (d.severity, d.code, d.file, d.line, d.column, d.message)
         for d in build_project(project).diagnostics
@@ -282,3 +282,43 @@ def test_a_run_until_condition_reads_variable_and_refuses_call():
         "'Main.t.Share > 3': MAIN.T.SHARE is a property monitored as 'call', read by running its GET: a condition is "
         "checked after every scan, and would run it each time; use 'variable' or the variables its GET reads"
     )
+
+
+def test_the_attribute_anywhere_but_a_property_is_a_located_warning():
+    """CODESYS also monitors function calls with it; LadderLab shows properties only, and says so where it stands:
+    above METHOD in IEC text, heading a method's declarations, in a body."""
+    text = """
+FUNCTION_BLOCK Pump
+VAR on : BOOL; END_VAR
+{attribute 'monitoring' := 'call'}
+METHOD Start : BOOL
+Start := on;
+END_METHOD
+END_FUNCTION_BLOCK
+PROGRAM Main
+VAR p : Pump; END_VAR
+{attribute 'monitoring' := 'variable'}
+p.Start();
+END_PROGRAM
+"""
+    project, problems = source_to_project(text, "monitoring")
+    assert project is not None and [(d.code, d.severity, d.line) for d in problems] == [
+        ("ST-PRAGMA", "warning", 4),  # above METHOD
+        ("ST-PRAGMA", "warning", 11),  # in Main's body
+    ]
+    pump = project.pous[0]
+    method = pump.methods[0].model_copy(update={"declarations": "{attribute 'monitoring' := 'call'}"})
+    project.pous[0] = pump.model_copy(update={"methods": [method]})
+    found = [
+        (d.severity, d.file, d.line, d.column, d.message)
+        for d in build_project(project).diagnostics
+        if d.code == "ST-PRAGMA"
+    ]
+    tail = (
+        ": it shows a property's value online when it heads the declarations of the property's GET (or SET), written "
+        "above PROPERTY in IEC text; move it there or remove it"
+    )
+    assert found == [
+        ("warning", "Main/body", 11, 1, "the attribute 'monitoring' has no effect here" + tail),
+        ("warning", "Pump.Start/declarations", 1, 1, "the attribute 'monitoring' has no effect on a method" + tail),
+    ]

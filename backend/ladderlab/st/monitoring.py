@@ -18,7 +18,7 @@ from ..model.diagnostics import Diagnostic, Severity
 from ..model.project import Project, Property
 from . import types as t
 from .methods import method_file, property_of
-from .pragmas import head_monitoring
+from .pragmas import head_monitoring, monitoring_misplaced
 from .symbols import CheckResult, PouInfo, PropertyRef
 
 MODES = ("variable", "call")
@@ -34,6 +34,15 @@ def check_monitoring(result: CheckResult, project: Project) -> None:
             continue
         for prop in pou.properties:
             _mark(result, info, prop)
+        heads = [(pou.declarations, f"{pou.name}/declarations", pou.name)]
+        heads += [
+            (m.declarations, method_file(pou.name, m.name, "declarations"), f"{pou.name}.{m.name}") for m in pou.methods
+        ]
+        for text, file, label in heads:  # a function block's, program's or method's own: it shows no property
+            found = head_monitoring(text)
+            if found is not None:
+                why = "on a method" if "." in label else f"on {label} itself"
+                _placed(result, found[1], monitoring_misplaced(file, label, why))
 
 
 def _mark(result: CheckResult, info: PouInfo, prop: Property) -> None:
@@ -71,21 +80,15 @@ def _mark(result: CheckResult, info: PouInfo, prop: Property) -> None:
 def _report(
     result: CheckResult, place: tuple[int, int, int, int], file: str, pou: str, severity: Severity, why: str
 ) -> None:
-    line, column, end_line, end_column = place
+    """ST-PRAGMA at the attribute on the property ``pou``, saying ``why``."""
     message = f"the attribute 'monitoring' on the property {pou}: {why}"
-    result.diagnostics.append(
-        Diagnostic(
-            severity=severity,
-            code="ST-PRAGMA",
-            message=message,
-            file=file,
-            pou=pou,
-            line=line,
-            column=column,
-            end_line=end_line,
-            end_column=end_column,
-        )
-    )
+    _placed(result, place, Diagnostic(severity=severity, code="ST-PRAGMA", message=message, file=file, pou=pou))
+
+
+def _placed(result: CheckResult, place: tuple[int, int, int, int], diagnostic: Diagnostic) -> None:
+    line, column, end_line, end_column = place
+    where = {"line": line, "column": column, "end_line": end_line, "end_column": end_column}
+    result.diagnostics.append(diagnostic.model_copy(update=where))
 
 
 def property_names(fb: PouInfo) -> dict[str, None]:

@@ -116,6 +116,36 @@ def misplaced_call_after_init(text: str, file: str | None, pou: str | None, plac
     ]
 
 
+def misplaced_monitoring(text: str, file: str | None, pou: str | None, place: str = "") -> list[Diagnostic]:
+    """The warning ST-PRAGMA at each ``{attribute 'monitoring' := ...}`` of ``text`` that shows no property online:
+    in place only at the head of a declarations text (``place`` "declarations": a property accessor's, the checker
+    sees, st/monitoring.py) and above a PROPERTY header of a whole file (``place`` "source")."""
+    if "monitoring" not in text.lower():
+        return []
+    starts = _line_starts(text)
+    return [
+        _at(pragma, starts, monitoring_misplaced(file, pou))
+        for pragma in _pragmas(text, _MONITORING)
+        if not (place == "declarations" and _skip(text, 0) >= pragma.end())
+        and not (place == "source" and _PROPERTY.match(text, _skip(text, pragma.end())))
+    ]
+
+
+def monitoring_misplaced(file: str | None, pou: str | None, why: str = "") -> Diagnostic:
+    """ST-PRAGMA (a warning): a monitoring attribute that shows nothing (``why``: where it stands, else "here")."""
+    return Diagnostic(
+        severity="warning",
+        code="ST-PRAGMA",
+        message=(
+            f"the attribute 'monitoring' has no effect {why or 'here'}: it shows a property's value online when it "
+            "heads the declarations of the property's GET (or SET), written above PROPERTY in IEC text; move it "
+            "there or remove it"
+        ),
+        file=file,
+        pou=pou,
+    )
+
+
 def head_call_after_init(text: str) -> tuple[int, int, int, int] | None:
     """Where ``{attribute 'call_after_init'}`` stands at the head of a declarations text (before its first block:
     the attribute of the POU or method the text declares), as (line, column, end line, end column); None if not."""
