@@ -541,8 +541,8 @@ class Simulation:
 
     def _run_getter(self, path: str, getter: Getter, reference: tuple[object, object]) -> object:
         """What the GET of a property monitored as 'call' returns for the instance at ``reference``, run now: only
-        between scans (never in a halted one), under a task's watchdog; a fault in it is NoTarget with the located
-        fault (the program's tasks go on)."""
+        between scans (NoTarget in a halted one), under a task's watchdog; a fault in it is GetterFault with the
+        located fault (the program's tasks go on)."""
         if self.halted is not None or self._scan is not None:
             raise NoTarget(f"{path}: the scan is halted in the middle, and a property's GET runs only between scans")
         if getter.dispatched:  # an override of the GET: the one of the instance's function block

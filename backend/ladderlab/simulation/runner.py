@@ -470,7 +470,7 @@ class SimRunner:
         full, sim = self._full, self.shown
         reader = self._reader if self._view is None else self._view_reader
         values = reader.read()
-        self._faulting_watched = self._log_getter_faults(getattr(reader, "faults", {}), self._faulting_watched)
+        self._faulting_watched = self._log_getter_faults(reader.faults, self._faulting_watched)
         if full:
             changed = values
             self._sent_values = dict(values)
