@@ -1,0 +1,161 @@
+"""LD networks of one shape filled in from a template (ir/ld_templates.py, issue 27) give the very IR, diagnostics and
+generated code that lowering every network on its own gives.
+
+The diagrams repeat random shapes whose variables are the same or different, of other types (INT compares, an ADD
+box writing its input), FB boxes and their outputs read by contacts (``T0.Q``), parallel branches, box inputs fed by
+series lists, edge contacts and coils (their memories are slots of their own), globals, constants, literals and
+unknown names (reported); the plain lowering is what ``LdTemplates`` does without its templates.
+"""
+
+from __future__ import annotations
+
+import os
+
+import pytest
+from benchmarks.diagrams import project as benchmark_project
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from ladderlab.engine.codegen import generate
+from ladderlab.examples import example_names, example_project
+from ladderlab.ir import ld_templates
+from ladderlab.ir.lower_project import LoweringResult, lower_project
+from ladderlab.model import ld
+from ladderlab.model.project import Pou, Project, Task
+
+BOOLS = ["B0", "B1", "B2", "B3"]
+
+
+def _plain(self: ld_templates.LdTemplates, network: ld.LdNetwork) -> object:
+    return self.rung.lower(network)
+
+
+def _lowered(project: Project, plain: bool) -> LoweringResult:
+    with pytest.MonkeyPatch.context() as patched:
+        if plain:
+            patched.setattr(ld_templates.LdTemplates, "lower", _plain)
+        return lower_project(project)
+
+
+def _both(project: Project, variants: tuple[str, ...] = ("fast",)) -> LoweringResult:
+    """The project lowered with and without templates: the same IR, diagnostics and code (``variants``)."""
+    filled, plain = _lowered(project, False), _lowered(project, True)
+    assert [d.format() for d in filled.diagnostics] == [d.format() for d in plain.diagnostics]
+    assert repr(filled.program) == repr(plain.program)
+    if filled.program is not None and plain.program is not None:
+        for variant in variants:
+            ours, theirs = generate(filled.program, variant), generate(plain.program, variant)
+            assert ours.source == theirs.source
+            assert ours.line_origins == theirs.line_origins
+    return filled
+
+
+def _filled_networks(monkeypatch: pytest.MonkeyPatch) -> list[str]:
+    """The ids of the networks filled in from a template from now on."""
+    filled: list[str] = []
+    fill = ld_templates.LdTemplates._filled
+    monkeypatch.setattr(
+        ld_templates.LdTemplates, "_filled", lambda self, *args: (filled.append(args[1].id), fill(self, *args))[1]
+    )
+    return filled
+
+
+series = st.lists(
+    st.one_of(
+        st.tuples(
+            st.just("contact"),
+            st.sampled_from([*BOOLS, "G1", "K1", "T0.Q", "T1.Q", "I0"]),
+            st.sampled_from(["no", "nc", "p"]),
+        ),
+        st.tuples(
+            st.just("coil"), st.sampled_from([*BOOLS, "G1", "Nope"]), st.sampled_from(["normal", "negated", "set", "n"])
+        ),
+        st.tuples(st.just("compare"), st.sampled_from(["I0", "I1", "5"]), st.sampled_from(["I0", "I1", "K2"])),
+        st.tuples(st.just("ton"), st.sampled_from(["T0", "T1", "B0"]), st.sampled_from(["T#5ms", "T#1s"])),
+        st.tuples(st.just("add"), st.sampled_from(["I0", "I1"]), st.sampled_from(["I0", "I1", "1"])),
+        st.tuples(st.just("parallel"), st.sampled_from(BOOLS), st.sampled_from(BOOLS)),
+        st.tuples(st.just("fed"), st.sampled_from(["T0", "T1"]), st.sampled_from(BOOLS)),
+    ),
+    min_size=1,
+    max_size=4,
+)
+
+
+def _element(n: int, k: int, spec: tuple[str, str, str]) -> ld.LdElement:
+    kind, a, b = spec
+    ident = f"e{n}_{k}"
+    if kind == "contact":
+        return ld.Contact(id=ident, var=a, mode=b)  # type: ignore[arg-type]
+    if kind == "coil":
+        return ld.Coil(id=ident, var=a, mode=b)  # type: ignore[arg-type]
+    if kind == "compare":
+        return ld.Compare(id=ident, op="LT", left=a, right=b)
+    if kind == "ton":
+        return ld.Box(id=ident, call="TON", instance=a, inputs={"PT": b})
+    if kind == "add":
+        return ld.Box(id=ident, call="ADD", en=True, inputs={"IN1": a, "IN2": b}, outputs={"OUT": a})
+    if kind == "parallel":
+        return ld.Parallel(
+            id=ident,
+            branches=[[ld.Contact(id=f"{ident}a", var=a)], [ld.Contact(id=f"{ident}b", var=b, mode="nc")]],
+        )
+    fed = [ld.Contact(id=f"{ident}i", var=b)]
+    return ld.Box(id=ident, call="TON", instance=a, inputs={"IN": fed, "PT": "T#2ms"})
+
+
+def _project(networks: list[list[tuple[str, str, str]]]) -> Project:
+    declarations = (
+        f"VAR\n  {', '.join(BOOLS)} : BOOL; I0, I1 : INT; T0, T1 : TON;\nEND_VAR\n"
+        "VAR CONSTANT K1 : BOOL := TRUE; K2 : INT := 3; END_VAR\nVAR_EXTERNAL G1 : BOOL; END_VAR"
+    )
+    body = ld.LdBody(
+        networks=[
+            ld.LdNetwork(id=f"n{n}", elements=[_element(n, k, spec) for k, spec in enumerate(elements)])
+            for n, elements in enumerate(networks)
+        ]
+    )
+    main = Pou(name="Main", kind="program", language="ld", declarations=declarations, body=body)
+    return Project(
+        name="shapes",
+        pous=[main],
+        globals="VAR_GLOBAL G1 : BOOL; END_VAR",
+        tasks=[Task(name="main", interval="T#10ms", programs=["Main"])],
+    )
+
+
+@settings(max_examples=int(os.environ.get("TEMPLATE_EXAMPLES", "30")), deadline=None)
+@given(shapes=st.lists(series, min_size=1, max_size=5), repeats=st.integers(2, 8))
+def test_networks_of_repeated_shapes_give_the_plain_lowering(
+    shapes: list[list[tuple[str, str, str]]], repeats: int
+) -> None:
+    _both(_project([shapes[i % len(shapes)] for i in range(repeats * len(shapes))]))
+
+
+@pytest.mark.parametrize("timed", [1, 4])
+def test_the_benchmark_diagram_gives_the_plain_lowering(timed: int, monkeypatch: pytest.MonkeyPatch) -> None:
+    filled = _filled_networks(monkeypatch)
+    _both(benchmark_project("ld", 300, timed), ("fast", "monitor", "debug"))
+    assert len(filled) >= 300 - 3  # every network but the first of each shape (and of the temporaries' growth)
+
+
+@pytest.mark.parametrize("name", example_names())
+@pytest.mark.parametrize("start", ["solution", "exercise"])
+def test_every_example_gives_the_plain_lowering(name: str, start: str) -> None:
+    _both(example_project(name, name, start), ("fast", "monitor"))
+
+
+def test_a_variable_of_another_type_class_or_sameness_is_another_shape(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Networks alike but for a variable's class (C), its type (a bit of a WORD: no template at all) or which of
+    the variables are the same are each lowered on their own; only the last is filled in (from n1: n0 added the
+    power-flow temporary's slot)."""
+    declarations = "VAR A, B : BOOL; W : WORD; END_VAR\nVAR_OUTPUT C : BOOL; END_VAR"
+    pairs = [("A", "B"), ("B", "A"), ("A", "C"), ("W.1", "B"), ("B", "B"), ("A", "B")]
+    networks = [
+        ld.LdNetwork(id=f"n{n}", elements=[ld.Contact(id=f"a{n}", var=a), ld.Coil(id=f"c{n}", var=c)])
+        for n, (a, c) in enumerate(pairs)
+    ]
+    pou = Pou(name="Main", kind="program", language="ld", declarations=declarations, body=ld.LdBody(networks=networks))
+    project = Project(name="kinds", pous=[pou], tasks=[Task(name="t", interval="T#10ms", programs=["Main"])])
+    filled = _filled_networks(monkeypatch)
+    _both(project)
+    assert filled == ["n5"]
