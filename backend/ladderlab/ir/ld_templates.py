@@ -13,8 +13,8 @@ names join an id and a pin) or twice in the network, a variable that is CONSTANT
 in-out, of a method's instance or of a type other than an elementary one or an FB (as an instance or under one of
 its outputs, ``T1.Q``). A network becomes a template only when lowering it reported nothing, added no slot (a
 pooled temporary, an edge memory, a located address) and made IR nodes this module knows how to copy; the
-statements are copied, the expressions shared unless they hold one of the network's variables
-(tests/ir/test_ld_templates.py compares the IR with the plain lowering's).
+statements are made anew by one function compiled per template, the expressions shared unless they hold one of
+the network's variables (tests/ir/test_ld_templates.py compares the IR with the plain lowering's).
 """
 
 from __future__ import annotations
@@ -24,7 +24,7 @@ from typing import TYPE_CHECKING, Any
 
 from ..model import ld
 from ..st import types as t
-from .diagram_shapes import binder, fb_key, type_key
+from .diagram_shapes import fb_key, type_key
 from .nodes import (
     Assign,
     Binary,
@@ -47,35 +47,36 @@ from .nodes import (
 if TYPE_CHECKING:
     from ..st.symbols import Symbol
     from .context import PouContext
-    from .diagram_operands import Operands
     from .lower_ld import _Rung
 
 _CLASSES = ("VAR", "VAR_INPUT", "VAR_OUTPUT", "VAR_TEMP")  # variables var_for reads as a plain local slot
-_EXPRESSIONS = (Var, Const, Unary, Binary, Call, Convert)  # the expressions a template may hold
+_STATEMENTS = (Assign, If, FbCall, FnCall, Probe)  # the statements a template may hold
+_COMPOSITE = (Unary, Binary, Call, Convert)  # the expressions with expressions inside a template may hold
 _TYPES = ("type", "arg_types", "source")  # the fields of IR types in the expressions
 
 
 class _Plain(Exception):
-    """The network has no shape: lower it plainly."""
+    """The network has no shape (or its IR none this module copies): it is lowered plainly."""
 
 
 class _Shape:
-    """A network's shape key, and its own element ids and variables in the order the key names them."""
+    """A network's shape key (``key``), its element ids in walk order and its variables in the order the key
+    names them."""
 
-    def __init__(self, ctx: PouContext, ops: Operands, network: ld.LdNetwork):
-        self.ctx, self.ops = ctx, ops
+    def __init__(self, ctx: PouContext, network: ld.LdNetwork, operands: Callable[[str], Any]):
+        self.ctx, self._named = ctx, operands
+        self._symbols = ctx.info.symbols if ctx.info is not None and ctx.info.method is None else {}
         self.ids: list[str] = []
-        self.variables: dict[str, int] = {}  # upper-case name -> position in ``values``
+        self.positions: dict[Symbol, int] = {}  # the network's variables -> their position in ``values``
         self.values: list[Var] = []
-        kinds: list[tuple] = []
-        self._kinds = kinds
+        self._kinds: list[tuple] = []
         elements = self.series(network.elements)
         if len(set(self.ids)) != len(self.ids) or any("." in ident for ident in self.ids):
             raise _Plain
-        self.key = (tuple(kinds), elements)
+        self.key = (tuple(self._kinds), elements)
 
     def series(self, elements: list[ld.LdElement]) -> tuple:
-        return tuple(self.element(element) for element in elements)
+        return tuple([self.element(element) for element in elements])
 
     def element(self, element: Any) -> tuple:
         self.ids.append(element.id)
@@ -85,37 +86,38 @@ class _Shape:
         if kind == "compare":
             return kind, element.op, self.operand(element.left), self.operand(element.right)
         if kind == "parallel":
-            return kind, tuple(self.series(branch) for branch in element.branches)
+            return kind, tuple([self.series(branch) for branch in element.branches])
         if kind == "box":
             inputs = tuple(
-                (pin, self.series(value) if isinstance(value, list) else self.operand(value))
-                for pin, value in element.inputs.items()
+                [
+                    (pin, self.series(value) if type(value) is list else self.operand(value))
+                    for pin, value in element.inputs.items()
+                ]
             )
-            outputs = tuple((pin, self.operand(text)) for pin, text in element.outputs.items())
-            instance = self.operand(element.instance, fb=True) if element.instance is not None else None
+            outputs = tuple([(pin, self.operand(text)) for pin, text in element.outputs.items()])
+            instance = self.operand(element.instance, True) if element.instance is not None else None
             return kind, element.call, instance, inputs, outputs, element.en
         raise _Plain  # a jump or return
 
     def operand(self, text: str, fb: bool = False) -> tuple:
-        """An operand's part of the key: which variable of the network and its member, or else its text."""
-        named = self.ops.named_variable(text)
-        if named is None:
-            if fb:
-                raise _Plain
-            return ("text", text)
-        symbol, member = named
-        instance = isinstance(symbol.type, t.FbType)
-        if (member is not None or fb) != instance or (fb and member is not None):
+        """An operand's part of the key: which variable of the network and its member, or else its text. (A
+        POU variable's plain name is looked up directly: it is what ``Operands.named_variable`` finds first.)"""
+        symbol = self._symbols.get(text.upper())
+        member = None
+        if symbol is None:
+            named = self._named(text)
+            if named is None:
+                if fb:
+                    raise _Plain
+                return ("text", text)
+            symbol, member = named
+        if (member is not None or fb) != isinstance(symbol.type, t.FbType) or (fb and member is not None):
             raise _Plain  # (a member of an FB instance only; an instance only where one is wanted)
-        return "var", self.variable(symbol), member
+        position = self.positions.get(symbol)
+        return "var", self.variable(symbol) if position is None else position, member
 
     def variable(self, symbol: Symbol) -> int:
-        """The position of a variable among the network's; its kind goes into the key at its first use."""
-        name = symbol.name.upper()
-        found = self.variables.get(name)
-        if found is not None:
-            return found
-        ctx = self.ctx
+        """A variable new to the network: its position; its kind goes into the key."""
         if (
             symbol.constant
             or symbol.address is not None
@@ -123,12 +125,11 @@ class _Shape:
             or symbol.implicit is not None
             or symbol.pou is None
             or symbol.var_class not in _CLASSES
-            or name in ctx.edges
-            or (ctx.info is not None and ctx.info.method is not None)
         ):
             raise _Plain
+        ctx = self.ctx
         var = ctx.var_for(symbol)
-        if var.scope != "local" or var.path or var.name != name:
+        if var.scope != "local" or var.path or var.name != symbol.name.upper() or var.name in ctx.edges:
             raise _Plain
         if type(symbol.type) is t.Elementary:
             kind = type_key(symbol.type, var.type)
@@ -137,103 +138,98 @@ class _Shape:
         else:
             raise _Plain
         self._kinds.append((kind, symbol.var_class))
-        self.variables[name] = len(self.values)
+        position = self.positions[symbol] = len(self.values)
         self.values.append(var)
-        return self.variables[name]
-
-
-class _Fill:
-    """What a template's copy is bound to: the network's variables by the template's names, its origins by
-    element position (the last: the network's own), its element ids."""
-
-    __slots__ = ("ids", "names", "origins")
-
-    def __init__(self, names: dict[str, Var], origins: list[Origin], ids: list[str]):
-        self.names, self.origins, self.ids = names, origins, ids
+        return position
 
 
 class _Template:
-    """A network's statements as copiers taking a ``_Fill``; raises ``_Plain`` for IR it cannot copy."""
+    """A network's statements as the source of one function of the network's variables (``v``), its elements'
+    origins (``o``, by walk position; the last: the network's own) and its element ids (``ids``), compiled once.
+    Shared values (types, constants, expressions without a variable of the network) are its ``c``."""
 
     def __init__(self, statements: list[Stmt], shape: _Shape, origins: dict[int, int]):
-        self.names = [var.name for var in shape.values]
-        self._ids = shape.ids
-        self._origins = origins  # id() of a template origin -> its element's position
-        self._known = frozenset(self.names)
-        self._statements = [self._statement(statement) for statement in statements]
+        self._names = {var.name: i for i, var in enumerate(shape.values)}
+        self._ids, self._origins = shape.ids, origins  # origins: id() of a template origin -> its position
+        self._shared: list[Any] = []
+        source = f"lambda v, o, ids: [{', '.join(self._statement(s) for s in statements)}]"
+        self.fill: Callable[[list[Var], list[Origin], list[str]], list[Stmt]] = eval(  # our own text
+            source, {"c": self._shared, "_select": _select}
+        )
 
-    def fill(self, fill: _Fill) -> list[Stmt]:
-        return [copy(fill) for copy in self._statements]
+    def _constant(self, value: Any) -> str:
+        self._shared.append(value)
+        return f"c[{len(self._shared) - 1}]"
 
-    def _statement(self, statement: Stmt) -> Callable[[_Fill], Stmt]:
+    def _statement(self, statement: Any) -> str:
         kind = type(statement)
         position = self._origins.get(id(statement.origin))
-        if kind not in (Assign, If, FbCall, FnCall, Probe) or position is None:
+        if kind not in _STATEMENTS or position is None:
             raise _Plain
-        parts: list[tuple[Any, Callable[[_Fill], Any] | None]] = []  # (the fields in the constructor's order)
-        for name in kind.__slots__:
+        fields = []
+        for name in kind.__slots__:  # (a dataclass's constructor takes its fields in this order)
             value = getattr(statement, name)
             if name == "origin":
-                copier = None
+                fields.append(f"o[{position}]")
             elif kind is Probe and name == "element":
-                copier = self._probe_name(value)
-            elif kind is If and name in ("branches", "orelse"):
-                copier = self._nested(value)
+                fields.append(self._probe_name(value))
+            elif kind is If and name == "branches":
+                fields.append(f"[{', '.join(f'({self._value(c)}, {self._statements(b)})' for c, b in value)}]")
+            elif kind is If and name == "orelse":
+                fields.append(self._statements(value))
             else:
-                copier = self._value(value)
-            parts.append((value, copier))
-        at = kind.__slots__.index("origin")
+                fields.append(self._value(value))
+        return f"{self._constant(kind)}({', '.join(fields)})"
 
-        def copy(fill: _Fill) -> Stmt:
-            values = [value if copier is None else copier(fill) for value, copier in parts]
-            values[at] = fill.origins[position]
-            return kind(*values)
+    def _statements(self, statements: list[Stmt]) -> str:
+        return f"[{', '.join(self._statement(s) for s in statements)}]"
 
-        return copy
-
-    def _nested(self, value: list) -> Callable[[_Fill], list]:
-        """An If's branches (condition, statements) or its else statements."""
-        if all(type(item) is tuple for item in value):
-            branches = [
-                (condition, self._value(condition), [self._statement(s) for s in body]) for condition, body in value
-            ]
-            return lambda fill: [
-                (condition if bind is None else bind(fill), [copy(fill) for copy in body])
-                for condition, bind, body in branches
-            ]
-        body = [self._statement(statement) for statement in value]
-        return lambda fill: [copy(fill) for copy in body]
-
-    def _probe_name(self, name: str) -> Callable[[_Fill], str]:
+    def _probe_name(self, name: str) -> str:
         """A probe's name: an element's id, or a box's id and a pin (``t1.Q``)."""
         head, dot, pin = name.partition(".")
         if head not in self._ids:
             raise _Plain
-        position = self._ids.index(head)
-        return lambda fill: fill.ids[position] + dot + pin
+        return f"ids[{self._ids.index(head)}]" + (f" + {self._constant(dot + pin)}" if dot else "")
 
-    def _value(self, value: Any) -> Callable[[_Fill], Any] | None:
-        """A field's copier binding the network's variables (None: shared as it is, IR expressions are immutable)."""
-        self._check(value)
-        bind = binder(value, self._known)
-        return None if bind is None else lambda fill: bind(fill.names)
+    def _value(self, value: Any) -> str:
+        """A field's value: shared when it holds no variable of the network (IR expressions are immutable)."""
+        return self._constant(value) if not self._holds(value) else self._made(value)
 
-    def _check(self, value: Any) -> None:
-        """Every expression in ``value`` one ``binder`` copies, every variable of the network in it a member path."""
-        if type(value) in (list, tuple):
-            for item in value:
-                self._check(item)
-        elif value is None or type(value) in (str, bool, int):
-            return
-        elif type(value) not in _EXPRESSIONS:
-            raise _Plain
-        elif type(value) is Var:
-            if value.name in self._known and (value.scope != "local" or any(type(s) is not Member for s in value.path)):
+    def _made(self, value: Any) -> str:
+        kind = type(value)
+        if kind is Var:
+            position = self._names[value.name]
+            return f"v[{position}]" if not value.path else f"_select(v[{position}], {self._constant(value)})"
+        if kind is list or kind is tuple:
+            items = ", ".join(self._value(item) for item in value)
+            return f"[{items}]" if kind is list else f"({items},)"
+        fields = ", ".join(
+            self._constant(getattr(value, name)) if name in _TYPES else self._value(getattr(value, name))
+            for name in kind.__slots__
+        )
+        return f"{self._constant(kind)}({fields})"
+
+    def _holds(self, value: Any) -> bool:
+        """Does ``value`` hold a variable of the network? Raises ``_Plain`` for what this module does not copy."""
+        kind = type(value)
+        if kind is Var:
+            if value.name not in self._names:
+                return False
+            if value.scope != "local" or any(type(s) is not Member for s in value.path):
                 raise _Plain
-        elif type(value) is not Const:
-            for name in value.__slots__:
-                if name not in _TYPES:
-                    self._check(getattr(value, name))
+            return True
+        if kind is list or kind is tuple:
+            return any([self._holds(item) for item in value])
+        if value is None or kind is str or kind is bool or kind is int or kind is Const:
+            return False
+        if kind not in _COMPOSITE:
+            raise _Plain
+        return any([self._holds(getattr(value, name)) for name in kind.__slots__ if name not in _TYPES])
+
+
+def _select(value: Var, member: Var) -> Var:
+    """A member of the network's FB instance: the template's selectors below the instance's own path."""
+    return Var(value.scope, value.name, member.type, (*value.path, *member.path))
 
 
 class LdTemplates:
@@ -246,7 +242,7 @@ class LdTemplates:
 
     def lower(self, network: ld.LdNetwork) -> Block:
         try:
-            shape = _Shape(self.ctx, self.rung.ops, network) if network.label is None else None
+            shape = _Shape(self.ctx, network, self.rung.ops.named_variable) if network.label is None else None
         except _Plain:
             shape = None
         template = self.templates.get(shape.key, False) if shape is not None else None
@@ -272,8 +268,7 @@ class LdTemplates:
             return None
 
     def _filled(self, template: _Template, network: ld.LdNetwork, shape: _Shape) -> Block:
-        pou, name = self.ctx.name, network.id
-        origins = [diagram_origin(pou, name, ident) for ident in shape.ids]
+        pou, name, ids = self.ctx.name, network.id, shape.ids
+        origins = [diagram_origin(pou, name, ident) for ident in ids]
         origins.append(diagram_origin(pou, name))
-        fill = _Fill(dict(zip(template.names, shape.values)), origins, shape.ids)
-        return Block(template.fill(fill), origins[-1], None)
+        return Block(template.fill(shape.values, origins, ids), origins[-1], None)
