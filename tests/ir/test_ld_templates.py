@@ -159,3 +159,48 @@ def test_a_variable_of_another_type_class_or_sameness_is_another_shape(monkeypat
     filled = _filled_networks(monkeypatch)
     _both(project)
     assert filled == ["n5"]
+
+
+@pytest.mark.parametrize(
+    ("kind", "declarations", "pairs"),
+    [
+        # an FB's inputs, outputs and R_EDGE input (read as its detected edge: never filled in)
+        (
+            "function_block",
+            "VAR_INPUT I1, I2 : BOOL; E1 : BOOL R_EDGE; END_VAR VAR_OUTPUT Q1, Q2 : BOOL; END_VAR",
+            [("I1", "Q1"), ("I2", "Q2"), ("E1", "Q1"), ("I2", "Q1"), ("E1", "Q2")],
+        ),
+        # a function's result written by a coil, its temporaries
+        (
+            "function",
+            "VAR_INPUT I1, I2 : BOOL; END_VAR VAR_TEMP T1 : BOOL; END_VAR",
+            [("I1", "T1"), ("I2", "T1"), ("T1", "Fn"), ("I1", "Fn"), ("I2", "T1")],
+        ),
+    ],
+)
+def test_function_blocks_and_functions_give_the_plain_lowering(
+    kind: str, declarations: str, pairs: list[tuple[str, str]], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    networks = [
+        ld.LdNetwork(id=f"n{n}", elements=[ld.Contact(id=f"a{n}", var=a), ld.Coil(id=f"c{n}", var=c)])
+        for n, (a, c) in enumerate(pairs * 2)
+    ]
+    pou = Pou(
+        name="Fn",
+        kind=kind,
+        language="ld",
+        declarations=declarations,
+        return_type="BOOL" if kind == "function" else None,
+        body=ld.LdBody(networks=networks),
+    )
+    main = Pou(
+        name="Main",
+        kind="program",
+        language="st",
+        declarations="VAR f : Fn; x : BOOL; END_VAR" if kind == "function_block" else "VAR x : BOOL; END_VAR",
+        body="f(I1 := x);" if kind == "function_block" else "x := Fn(I1 := x, I2 := TRUE);",
+    )
+    project = Project(name="pous", pous=[main, pou], tasks=[Task(name="t", interval="T#10ms", programs=["Main"])])
+    filled = _filled_networks(monkeypatch)
+    assert _both(project).program is not None
+    assert filled  # (some of the second round of networks)

@@ -69,16 +69,16 @@ class _Shape:
         self.ids: list[str] = []
         self.positions: dict[Symbol, int] = {}  # the network's variables -> their position in ``values``
         self.values: list[Var] = []
-        self._kinds: list[tuple] = []
+        self._kinds: list[tuple[Any, ...]] = []
         elements = self.series(network.elements)
         if len(set(self.ids)) != len(self.ids) or any("." in ident for ident in self.ids):
             raise _Plain
         self.key = (tuple(self._kinds), elements)
 
-    def series(self, elements: list[ld.LdElement]) -> tuple:
+    def series(self, elements: list[ld.LdElement]) -> tuple[Any, ...]:
         return tuple([self.element(element) for element in elements])
 
-    def element(self, element: Any) -> tuple:
+    def element(self, element: Any) -> tuple[Any, ...]:
         self.ids.append(element.id)
         kind = element.type  # (the tag, not isinstance: the pydantic classes check through ABCMeta)
         if kind == "contact" or kind == "coil":
@@ -99,7 +99,7 @@ class _Shape:
             return kind, element.call, instance, inputs, outputs, element.en
         raise _Plain  # a jump or return
 
-    def operand(self, text: str, fb: bool = False) -> tuple:
+    def operand(self, text: str, fb: bool = False) -> tuple[Any, ...]:
         """An operand's part of the key: which variable of the network and its member, or else its text. (A
         POU variable's plain name is looked up directly: it is what ``Operands.named_variable`` finds first.)"""
         symbol = self._symbols.get(text.upper())
@@ -238,7 +238,7 @@ class LdTemplates:
 
     def __init__(self, rung: _Rung):
         self.rung, self.ctx = rung, rung.ctx
-        self.templates: dict[tuple, _Template | None] = {}
+        self.templates: dict[tuple[Any, ...], _Template | None] = {}
 
     def lower(self, network: ld.LdNetwork) -> Block:
         try:
@@ -246,13 +246,13 @@ class LdTemplates:
         except _Plain:
             shape = None
         template = self.templates.get(shape.key, False) if shape is not None else None
-        if template:
-            return self._filled(template, network, shape)  # type: ignore[arg-type]
+        if shape is not None and isinstance(template, _Template):
+            return self._filled(template, network, shape)
         ctx = self.ctx
         before = (len(ctx.diagnostics), len(ctx.slots), len(ctx.image))
         block = self.rung.lower(network)
-        if template is False and (len(ctx.diagnostics), len(ctx.slots), len(ctx.image)) == before:
-            self.templates[shape.key] = self._template(block, shape)  # type: ignore[union-attr]
+        if shape is not None and template is False and (len(ctx.diagnostics), len(ctx.slots), len(ctx.image)) == before:
+            self.templates[shape.key] = self._template(block, shape)
         return block
 
     def _template(self, block: Block, shape: _Shape) -> _Template | None:
