@@ -70,7 +70,9 @@ series = st.lists(
         st.tuples(
             st.just("coil"), st.sampled_from([*BOOLS, "G1", "Nope"]), st.sampled_from(["normal", "negated", "set", "n"])
         ),
-        st.tuples(st.just("compare"), st.sampled_from(["I0", "I1", "5"]), st.sampled_from(["I0", "I1", "K2"])),
+        st.tuples(
+            st.just("compare"), st.sampled_from(["I0", "I1", "5"]), st.sampled_from(["I0", "I1", "K2", "I0 + 1"])
+        ),
         st.tuples(st.just("ton"), st.sampled_from(["T0", "T1", "B0"]), st.sampled_from(["T#5ms", "T#1s"])),
         st.tuples(st.just("add"), st.sampled_from(["I0", "I1"]), st.sampled_from(["I0", "I1", "1"])),
         st.tuples(st.just("parallel"), st.sampled_from(BOOLS), st.sampled_from(BOOLS)),
@@ -128,7 +130,23 @@ def _project(networks: list[list[tuple[str, str, str]]]) -> Project:
 def test_networks_of_repeated_shapes_give_the_plain_lowering(
     shapes: list[list[tuple[str, str, str]]], repeats: int
 ) -> None:
-    _both(_project([shapes[i % len(shapes)] for i in range(repeats * len(shapes))]))
+    networks = [
+        [_renamed(spec, i // len(shapes)) for spec in shapes[i % len(shapes)]] for i in range(repeats * len(shapes))
+    ]
+    _both(_project(networks))
+
+
+def _renamed(spec: tuple[str, str, str], turn: int) -> tuple[str, str, str]:
+    """The variables named plainly rotated in their pools each repetition (texts such as ``I0 + 1`` kept): later
+    networks of a shape have other variables than its first."""
+
+    def rename(text: str) -> str:
+        root, dot, member = text.partition(".")
+        pool = BOOLS if root in BOOLS else ["I0", "I1"] if root in ("I0", "I1") else ["T0", "T1"]
+        return pool[(pool.index(root) + turn) % len(pool)] + dot + member if root in pool else text
+
+    kind, a, b = spec
+    return kind, rename(a), rename(b) if kind != "contact" and kind != "coil" else b
 
 
 @pytest.mark.parametrize("timed", [1, 4])
@@ -204,3 +222,19 @@ def test_function_blocks_and_functions_give_the_plain_lowering(
     filled = _filled_networks(monkeypatch)
     assert _both(project).program is not None
     assert filled  # (some of the second round of networks)
+
+
+def test_an_operand_text_naming_a_variable_of_the_network_keeps_it_plain(monkeypatch: pytest.MonkeyPatch) -> None:
+    """``I1 + 1`` is kept as its text in the shape: a template whose texts name one of its own variables would bind
+    that name in them too (n3 would compare with ``I0 + 1``; n0 added the power flow's slot, n1 names its own I1)."""
+    declarations = "VAR I0, I1 : INT; END_VAR"
+    specs = [("I0", "I1 + 1"), ("I1", "I1 + 1"), ("I0", "I1 + 1"), ("I0", "I1 + 1")]
+    networks = [
+        ld.LdNetwork(id=f"n{n}", elements=[ld.Compare(id=f"k{n}", op="LT", left=a, right=b)])
+        for n, (a, b) in enumerate(specs)
+    ]
+    pou = Pou(name="Main", kind="program", language="ld", declarations=declarations, body=ld.LdBody(networks=networks))
+    project = Project(name="texts", pous=[pou], tasks=[Task(name="t", interval="T#10ms", programs=["Main"])])
+    filled = _filled_networks(monkeypatch)
+    _both(project)
+    assert filled == []

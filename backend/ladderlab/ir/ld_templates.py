@@ -6,7 +6,8 @@ on its ids only through the origins and probes it names. So the first network of
 and kept as a template; a later one of the same shape gets a copy of the template's statements with its own
 variables, origins and probe names. The shape is every field of every element except its id, with each operand
 that names a plain variable replaced by the variable's kind (its ST and IR type, its class) and which of the
-network's variables it is; any other operand is kept as its text.
+network's variables it is; any other operand is kept as its text (a template whose texts name one of its own
+variables is none: the names in its texts' IR would be bound too).
 
 What keeps a network plain (lowered as usual): a label, a jump or return, an element id with a ``.`` (probe
 names join an id and a pin) or twice in the network, a variable that is CONSTANT, located, an edge input, global,
@@ -19,6 +20,7 @@ the network's variables (tests/ir/test_ld_templates.py compares the IR with the 
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
@@ -49,6 +51,7 @@ if TYPE_CHECKING:
     from .context import PouContext
     from .lower_ld import _Rung
 
+_WORD = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")  # a name in an operand text (or a piece of a literal: never less)
 _CLASSES = ("VAR", "VAR_INPUT", "VAR_OUTPUT", "VAR_TEMP")  # variables var_for reads as a plain local slot
 _STATEMENTS = (Assign, If, FbCall, FnCall, Probe)  # the statements a template may hold
 _COMPOSITE = (Unary, Binary, Call, Convert)  # the expressions with expressions inside a template may hold
@@ -70,6 +73,7 @@ class _Shape:
         self.positions: dict[Symbol, int] = {}  # the network's variables -> their position in ``values``
         self.values: list[Var] = []
         self._kinds: list[tuple[Any, ...]] = []
+        self.texts: list[str] = []  # the operands kept as their text
         elements = self.series(network.elements)
         if len(set(self.ids)) != len(self.ids) or any("." in ident for ident in self.ids):
             raise _Plain
@@ -109,7 +113,8 @@ class _Shape:
             if named is None:
                 if fb:
                     raise _Plain
-                return ("text", text)
+                self.texts.append(text)
+            return ("text", text)
             symbol, member = named
         if (member is not None or fb) != isinstance(symbol.type, t.FbType) or (fb and member is not None):
             raise _Plain  # (a member of an FB instance only; an instance only where one is wanted)
@@ -150,6 +155,8 @@ class _Template:
 
     def __init__(self, statements: list[Stmt], shape: _Shape, origins: dict[int, int]):
         self._names = {var.name: i for i, var in enumerate(shape.values)}
+        if any(word.upper() in self._names for text in shape.texts for word in _WORD.findall(text)):
+            raise _Plain  # a text naming a variable of the network: its IR would be bound too (only the text is kept)
         self._ids, self._origins = shape.ids, origins  # origins: id() of a template origin -> its position
         self._shared: list[Any] = []
         source = f"lambda v, o, ids: [{', '.join(self._statement(s) for s in statements)}]"
