@@ -33,9 +33,11 @@ def lower_ld_body(pou: ModelPou, ctx: PouContext) -> list[Block]:
     body: ld.LdBody = pou.body  # type: ignore[assignment]
     ctx.places = Places(body)
     check_unique_networks(body.networks, ctx.report, "LD")
-    check_unique_ids(
-        ((i, n.id, e.id) for i, n in enumerate(body.networks, 1) for e in ld.walk(n.elements)), ctx.report, "LD"
-    )
+    ids = [e.id for n in body.networks for e in ld.walk(n.elements)]
+    if len(set(ids)) < len(ids):  # a repeated id, reported with its networks (no tuple each when none: issue 27)
+        check_unique_ids(
+            ((i, n.id, e.id) for i, n in enumerate(body.networks, 1) for e in ld.walk(n.elements)), ctx.report, "LD"
+        )
     labels = check_labels(body.networks, ctx.report, "LD")
     templates = LdTemplates(_Rung(ctx, Operands(ctx, "LD"), labels))  # networks of one shape lowered once
     return [templates.lower(network) for network in body.networks]
