@@ -271,7 +271,7 @@ class LdTemplates:
                 origins[id(origin)] = position
         try:
             return _Template(block.statements, shape, origins)
-        except _Plain:
+        except (_Plain, SyntaxError, RecursionError):  # (the latter two: a source nested beyond CPython's parser)
             return None
 
     def _filled(self, template: _Template, network: ld.LdNetwork, shape: _Shape) -> Block:
