@@ -94,9 +94,8 @@ class _Walk:
         self._needs: dict[str, bool] = {}
 
     def run(self) -> list[Stmt]:
-        if (
-            not self.chains and not self.after
-        ):  # no FB has the method: no instance runs it (a 200,000-slot program's walk: ~0.3 s)
+        # no FB has the method: no instance runs it (a 200,000-slot program's walk: ~0.3 s)
+        if not self.chains and not self.after:
             return self.out
         for instance in self.program.program_instances():
             var = Var("global", instance.name.upper(), FbInstance(instance.pou.upper()))
