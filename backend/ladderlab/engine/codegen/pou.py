@@ -18,6 +18,7 @@ from __future__ import annotations
 import re
 from collections.abc import Iterator
 from contextlib import contextmanager, nullcontext
+from typing import cast
 
 from ...ir import nodes as ir
 from ...ir import types as t
@@ -41,8 +42,13 @@ def _user_fb(module: ModuleContext, ty: t.IrType) -> bool:
 
 def _init_value(module: ModuleContext, slot: ir.Slot, pou: str) -> str | None:
     """Source of a slot's fresh initial value (a reference cell for a VAR_IN_OUT); None after a diagnostic."""
+    initial = slot.initial
+    constants = module.constant_slots.get(id(slot))
+    if constants is not None:  # stored here, not by every call (constant_inputs.py)
+        declared = cast("tuple[tuple[str, object], ...]", initial or ())  # (an FB instance's: (PIN, value) pairs)
+        initial = (*(pair for pair in declared if pair[0].upper() not in dict(constants)), *constants)
     try:
-        value = construct(slot.type, slot.initial, module)
+        value = construct(slot.type, initial, module)
     except CodegenError as error:
         module.diagnostics.append(diagnostic(f"{slot.name}: {error}", ir.Origin(pou)))
         return None

@@ -1,0 +1,128 @@
+"""Constant inputs stored once (issue 27): a standard FB's input that every call gives the same constant.
+
+A PROGRAM calling ``T1(IN := x, PT := T#5s)`` stores PT on every call, though between calls the pin holds T#5s
+anyway. Where nothing but those calls can write or read the pin, the instance is made with the constant in it
+(``ll_with(fb_TON(), PT=5000)``, at every initialisation) and the inlined calls of the fast and monitor variants
+leave the store out (the inlined body reads the constant itself). The debug variant, which calls ``execute``,
+still stores it. What differs from IEC is only what an online write or force changes: the next call would store
+the constant again, so ``Simulation`` marks the program instance and restores its constants before the next scan
+that runs it (``ConstantInputs``, engine/simulation.py); and before the first call, the pin shows the constant
+instead of the type's initial value.
+
+A pin qualifies when its instance is a VAR of a PROGRAM without jumps or RETURN, not called from any POU, whose
+every call of the instance is a statement of a network (or ST body) itself, not nested in a condition or loop,
+without EN, assigning the pin the same constant of the pin's type; and no code anywhere (any POU, an access path)
+mentions the instance other than through those calls and its outputs' reads: a read or write of ``T1.PT`` or
+``MAIN.T1.PT``, ``T1`` passed whole or its address taken. Names are compared across POUs, so a pin of another
+POU's instance of the same name disqualifies it too (conservative, never wrong).
+"""
+
+from __future__ import annotations
+
+import itertools
+
+from ...ir import nodes as ir
+from ...ir import types as t
+from .context import ModuleContext, std_fb_class, std_pin_type
+from .mentions import Walk, walk
+from .typeinfo import store_value
+
+#: POU (upper case) -> instance slot (upper case) -> ((PIN, constant value), ...)
+ConstantPins = dict[str, dict[str, tuple[tuple[str, object], ...]]]
+
+
+def constant_inputs(module: ModuleContext) -> ConstantPins:
+    """The pins stored once, by POU and instance (empty for a unit test program, whose instances may be mocked)."""
+    program = module.program
+    if program.mockable:
+        return {}
+    called = {  # PROGRAMs some POU calls as an FB (not only their task): they may run twice in a scan
+        s.instance.type.fb.upper()
+        for pou in module.pous.values()
+        for s in module.mentions(pou).fb_calls
+        if isinstance(s.instance.type, t.FbInstance)
+    }
+    candidates = {
+        name: _program_pins(module, pou)
+        for name, pou in module.pous.items()
+        if pou.kind == "program" and name not in called
+    }
+    found: ConstantPins = {}
+    if not any(candidates.values()):
+        return found
+    pairs, wholes = _mentioned(module)
+    for name, instances in candidates.items():
+        kept = {
+            slot: held
+            for slot, pins in instances.items()
+            if slot not in wholes and (held := tuple(p for p in pins if (slot, p[0]) not in pairs))
+        }
+        if kept:
+            found[name] = kept
+    return found
+
+
+def _program_pins(module: ModuleContext, pou: ir.Pou) -> dict[str, tuple[tuple[str, object], ...]]:
+    """The candidate pins of one PROGRAM: every call of the instance a top-level statement, the same constant."""
+    found = module.mentions(pou)
+    if found.jumps or any(isinstance(s, ir.Return) for block in pou.blocks for s in walk(block.statements)):
+        return {}
+    own = {s.name.upper(): s for s in pou.slots if s.var_class == "VAR" and isinstance(s.type, t.FbInstance)}
+    top = {id(s) for block in pou.blocks for s in block.statements if type(s) is ir.FbCall}
+    pins: dict[str, dict[str, object] | None] = {}
+    for s in found.fb_calls:
+        var = s.instance
+        if var.scope != "local" or var.path or var.name.upper() not in own:
+            continue
+        slot = var.name.upper()
+        fb = own[slot].type.fb  # type: ignore[union-attr]  # (an FbInstance: ``own``)
+        if std_fb_class(fb) is None or id(s) not in top or s.en is not None or s.body is not None:
+            pins[slot] = None
+            continue
+        constants = {
+            pin.upper(): store_value(value.value, value.type)
+            for pin, value in s.inputs
+            if type(value) is ir.Const and value.type == std_pin_type(fb, pin) and type(value.value) in _SCALARS
+        }
+        before = pins.get(slot, constants)
+        pins[slot] = None if before is None else {p: v for p, v in constants.items() if before.get(p, _NONE) == v}
+    return {slot: tuple(sorted(kept.items())) for slot, kept in pins.items() if kept}
+
+
+_SCALARS = (bool, int, float)
+_NONE = object()
+
+
+def _mentioned(module: ModuleContext) -> tuple[set[tuple[str, str]], set[str]]:
+    """(NAME, MEMBER) pairs some code or access path names (``T1.PT``), and the instance names it names whole."""
+    pairs: set[tuple[str, str]] = set()
+    wholes: set[str] = set()
+    for pou in module.pous.values():
+        found = module.mentions(pou)
+        for var in found.paths:
+            _add(var, pairs, wholes)
+        wholes |= found.whole_fbs
+        for s in found.fb_calls:
+            if s.instance.path:  # an instance called through a path: another program's, an array's element
+                _add(s.instance, pairs, wholes)
+    for instance in module.instances:  # VAR_CONFIG initial values (``MAIN.T1.PT``)
+        for var, _, _ in instance.init:
+            _add(var, pairs, wholes)
+    for path, _ in module.program.access.values():
+        parts = path.upper().replace("[", ".").split(".")
+        pairs.update(itertools.pairwise(parts))
+        wholes.add(parts[-1])
+    for task in module.tasks:
+        walked = Walk()
+        walked.statements(task.body or [])
+        for var in [*walked.paths, *(s.instance for s in walked.fb_calls if s.instance.path)]:
+            _add(var, pairs, wholes)
+        wholes |= walked.whole_fbs
+    return pairs, wholes
+
+
+def _add(var: ir.Var, pairs: set[tuple[str, str]], wholes: set[str]) -> None:
+    parts = [var.name.upper(), *(m.name.upper() for m in var.path if type(m) is ir.Member)]
+    pairs.update(itertools.pairwise(parts))
+    if isinstance(var.type, t.FbInstance):
+        wholes.add(parts[-1])
