@@ -170,6 +170,7 @@ def test_a_restored_state_gets_its_constant_inputs_back_at_the_next_scan():
         "T1(IN := go, PT := T#50ms); T1(IN := go);",  # a call without it
         "IF go THEN T1(IN := go, PT := T#50ms); END_IF;",  # not on every run of the body
         "p := ADR(T1); T1(IN := go, PT := T#50ms);",  # reachable through a pointer
+        "IF go THEN RETURN; END_IF; T1(IN := go, PT := T#50ms);",  # a call a RETURN may skip
     ],
 )
 def test_a_pin_something_else_may_touch_is_stored_by_every_call(text):
@@ -177,3 +178,58 @@ def test_a_pin_something_else_may_touch_is_stored_by_every_call(text):
     fast = _simulations(program)[0]
     assert "ll_with(fb_TON(), PT=" not in fast.compiled.source
     assert "ll_fb.PT = 50" in fast.compiled.source
+
+
+BLINK = """
+PROGRAM Blink
+VAR go : BOOL; T1 : TON; END_VAR
+T1(IN := go, PT := T#50ms);
+END_PROGRAM
+CONFIGURATION Plant
+    RESOURCE Cpu ON PLC
+        TASK fast (INTERVAL := T#10ms, PRIORITY := 1);
+        TASK slow (INTERVAL := T#20ms, PRIORITY := 2);
+        PROGRAM a WITH fast : Blink;
+        PROGRAM b WITH slow : Blink;
+    END_RESOURCE
+END_CONFIGURATION
+"""
+
+
+@pytest.mark.parametrize("variant", VARIANTS)
+def test_a_written_constant_input_lasts_until_the_task_of_its_program_runs(variant):
+    """Two instances of one program in a 10 ms and a 20 ms task (the first scan runs the fast one only, the second
+    both, tests/engine/test_configurations.py): a value written into both pins lasts until each instance's next
+    call, so after the first scan a's pin reads T#50ms again and b's still T#5ms, after the second both T#50ms."""
+    sim = _simulations(BLINK)[VARIANTS.index(variant)].simulation()
+    assert "ll_with(fb_TON(), PT=50)" in sim.compiled.source
+    for name in ("a", "b"):
+        sim.write(f"{name}.T1.PT", "T#5ms")
+    seen = []
+    for _ in range(2):
+        sim.cycle(1)
+        seen.append((sim.read("a.T1.PT"), sim.read("b.T1.PT")))
+    assert seen == [(50, 5), (50, 50)]
+
+
+@pytest.mark.parametrize(
+    "configuration",
+    [
+        "VAR_ACCESS seen : Cpu.a.T1.PT : TIME READ_ONLY; END_VAR",  # an access path shows it from the first scan
+        "VAR_CONFIG a.T1.PT : TIME := T#7ms; END_VAR",  # its initial value until the first call
+    ],
+)
+def test_a_pin_the_configuration_names_is_stored_by_every_call(configuration):
+    text = BLINK.replace("END_CONFIGURATION", f"    {configuration}\nEND_CONFIGURATION")
+    fast = _simulations(text)[0]
+    assert "ll_fb.PT = 50" in fast.compiled.source and "PT=50" not in fast.compiled.source
+
+
+def test_a_program_another_program_calls_keeps_its_stores():
+    """A PROGRAM called from another POU besides its task may run twice in a scan: its calls keep their stores."""
+    text = (
+        "PROGRAM Main\nVAR go : BOOL; T1 : TON; END_VAR\nT1(IN := go, PT := T#50ms);\nEND_PROGRAM\n"
+        "PROGRAM Other\nMain();\nEND_PROGRAM\n"
+    )
+    fast = _simulations(text)[0]
+    assert "ll_fb.PT = 50" in fast.compiled.source and "PT=50" not in fast.compiled.source

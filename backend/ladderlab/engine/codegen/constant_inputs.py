@@ -24,7 +24,7 @@ import itertools
 from ...ir import nodes as ir
 from ...ir import types as t
 from .context import ModuleContext, std_fb_class, std_pin_type
-from .mentions import Walk, walk
+from .mentions import Walk
 from .typeinfo import store_value
 
 #: POU (upper case) -> instance slot (upper case) -> ((PIN, constant value), ...)
@@ -65,7 +65,7 @@ def constant_inputs(module: ModuleContext) -> ConstantPins:
 def _program_pins(module: ModuleContext, pou: ir.Pou) -> dict[str, tuple[tuple[str, object], ...]]:
     """The candidate pins of one PROGRAM: every call of the instance a top-level statement, the same constant."""
     found = module.mentions(pou)
-    if found.jumps or any(isinstance(s, ir.Return) for block in pou.blocks for s in walk(block.statements)):
+    if found.jumps or found.returns:
         return {}
     own = {s.name.upper(): s for s in pou.slots if s.var_class == "VAR" and isinstance(s.type, t.FbInstance)}
     top = {id(s) for block in pou.blocks for s in block.statements if type(s) is ir.FbCall}

@@ -152,6 +152,7 @@ class Mentions:
     in_out_args: tuple[ir.Var, ...]  # what its function and method calls pass to a VAR_IN_OUT
     fb_calls: tuple[ir.FbCall, ...]
     jumps: bool
+    returns: bool  # whether it has a RETURN (a statement after it may not run)
     paths: tuple[ir.Var, ...]  # the variables it names with a path (``T1.PT``, ``A[i]``), FB calls' instances aside
     whole_fbs: frozenset[str]  # upper-case names of the FB instances it names whole (passed, ADR()), last member's
 
@@ -167,6 +168,7 @@ def mentions(pou: ir.Pou) -> Mentions:
         tuple(walked.in_outs),
         tuple(walked.fb_calls),
         walked.jumps,
+        walked.returns,
         tuple(walked.paths),
         frozenset(walked.whole_fbs),
     )
@@ -180,6 +182,7 @@ class Walk:
         self.in_outs: list[ir.Var] = []
         self.fb_calls: list[ir.FbCall] = []
         self.jumps = False
+        self.returns = False
         self.paths: list[ir.Var] = []
         self.whole_fbs: set[str] = set()
 
@@ -192,6 +195,8 @@ class Walk:
                 self.fb_calls.append(s)
             elif type(s) is ir.Jump:
                 self.jumps = True
+            elif type(s) is ir.Return:
+                self.returns = True
             for e in own_expressions(s):
                 if e is not None:
                     self.expression(e)
