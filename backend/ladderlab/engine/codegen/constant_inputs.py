@@ -65,32 +65,37 @@ def constant_inputs(module: ModuleContext) -> ConstantPins:
 def _program_pins(module: ModuleContext, pou: ir.Pou) -> dict[str, tuple[tuple[str, object], ...]]:
     """The candidate pins of one PROGRAM: every call of the instance a top-level statement, the same constant."""
     found = module.mentions(pou)
-    if found.jumps or found.returns:
+    if found.jumps or found.returns or not found.fb_calls:
         return {}
-    own = {s.name.upper(): s for s in pou.slots if s.var_class == "VAR" and isinstance(s.type, t.FbInstance)}
+    layout = module.layouts[pou.name.upper()]
     top = {id(s) for block in pou.blocks for s in block.statements if type(s) is ir.FbCall}
-    pins: dict[str, dict[str, object] | None] = {}
+    pins: dict[str, dict[str, ir.Const] | None] = {}
     for s in found.fb_calls:
         var = s.instance
-        if var.scope != "local" or var.path or var.name.upper() not in own:
+        place = layout.get(var.name) if var.scope == "local" and not var.path else None
+        if place is None or place.slot.var_class != "VAR" or not isinstance(place.slot.type, t.FbInstance):
             continue
-        slot = var.name.upper()
-        fb = own[slot].type.fb  # type: ignore[union-attr]  # (an FbInstance: ``own``)
+        slot, fb = var.name.upper(), place.slot.type.fb
         if std_fb_class(fb) is None or id(s) not in top or s.en is not None or s.body is not None:
             pins[slot] = None
             continue
         constants = {
-            pin.upper(): store_value(value.value, value.type)
+            pin.upper(): value
             for pin, value in s.inputs
-            if type(value) is ir.Const and value.type == std_pin_type(fb, pin) and type(value.value) in _SCALARS
+            if type(value) is ir.Const and type(value.value) in _SCALARS and value.type == std_pin_type(fb, pin)
         }
-        before = pins.get(slot, constants)
-        pins[slot] = None if before is None else {p: v for p, v in constants.items() if before.get(p, _NONE) == v}
-    return {slot: tuple(sorted(kept.items())) for slot, kept in pins.items() if kept}
+        before = pins.get(slot)
+        if before is not None:
+            constants = {p: c for p, c in constants.items() if p in before and before[p] == c}
+        pins[slot] = None if slot in pins and before is None else constants
+    return {
+        slot: tuple(sorted((pin, store_value(c.value, c.type)) for pin, c in kept.items()))
+        for slot, kept in pins.items()
+        if kept
+    }
 
 
 _SCALARS = (bool, int, float)
-_NONE = object()
 
 
 def _mentioned(module: ModuleContext) -> tuple[set[tuple[str, str]], set[str]]:
@@ -122,7 +127,11 @@ def _mentioned(module: ModuleContext) -> tuple[set[tuple[str, str]], set[str]]:
 
 
 def _add(var: ir.Var, pairs: set[tuple[str, str]], wholes: set[str]) -> None:
-    parts = [var.name.upper(), *(m.name.upper() for m in var.path if type(m) is ir.Member)]
-    pairs.update(itertools.pairwise(parts))
+    name = var.name.upper()
+    for selector in var.path:
+        if type(selector) is ir.Member:
+            member = selector.name.upper()
+            pairs.add((name, member))
+            name = member
     if isinstance(var.type, t.FbInstance):
-        wholes.add(parts[-1])
+        wholes.add(name)

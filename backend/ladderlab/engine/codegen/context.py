@@ -159,10 +159,9 @@ class ModuleContext:
         """``constant_pins`` by the id of the instance's ``ir.Slot`` (its initialisation sets them)."""
         pins = self.constant_pins
         return {
-            id(slot): pins[name][slot.name.upper()]
-            for name in pins
-            for slot in self.pous[name].slots
-            if slot.name.upper() in pins[name]
+            id(self.layouts[pou].places[slot].slot): held
+            for pou, instances in pins.items()
+            for slot, held in instances.items()
         }
 
     def mentions(self, pou: ir.Pou) -> Mentions:
