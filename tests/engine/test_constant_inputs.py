@@ -106,7 +106,7 @@ def test_a_constant_input_is_stored_when_the_instance_is_made_not_by_each_call()
     variant's calls still store PT and PV. Every variant's pins read the constants, before the first scan too."""
     fast, _, debug = _simulations(TIMER)
     source = fast.compiled.source
-    assert "ll_with(fb_TON(), PT=50)" in source and "ll_with(fb_CTU(), PV=2)" in source
+    assert "ll_pins(self, 'v_T1', 'PT', 50)" in source and "ll_pins(self, 'v_K1', 'PV', 2)" in source
     assert "ll_fb.IN = self.v_GO" in source and "ll_fb.PT =" not in source and "ll_fb.PV =" not in source
     assert "ll_fb.PT = 50" in debug.compiled.source
     for build in (fast, debug):
@@ -176,7 +176,7 @@ def test_a_restored_state_gets_its_constant_inputs_back_at_the_next_scan():
 def test_a_pin_something_else_may_touch_is_stored_by_every_call(text):
     program = f"PROGRAM Main\nVAR go : BOOL; T1 : TON; x : TIME; p : POINTER TO TON; END_VAR\n{text}\nEND_PROGRAM\n"
     fast = _simulations(program)[0]
-    assert "ll_with(fb_TON(), PT=" not in fast.compiled.source
+    assert "ll_pins(" not in fast.compiled.source
     assert "ll_fb.PT = 50" in fast.compiled.source
 
 
@@ -202,7 +202,7 @@ def test_a_written_constant_input_lasts_until_the_task_of_its_program_runs(varia
     both, tests/engine/test_configurations.py): a value written into both pins lasts until each instance's next
     call, so after the first scan a's pin reads T#50ms again and b's still T#5ms, after the second both T#50ms."""
     sim = _simulations(BLINK)[VARIANTS.index(variant)].simulation()
-    assert "ll_with(fb_TON(), PT=50)" in sim.compiled.source
+    assert "ll_pins(self, 'v_T1', 'PT', 50)" in sim.compiled.source
     for name in ("a", "b"):
         sim.write(f"{name}.T1.PT", "T#5ms")
     seen = []
@@ -222,7 +222,7 @@ def test_a_written_constant_input_lasts_until_the_task_of_its_program_runs(varia
 def test_a_pin_the_configuration_names_is_stored_by_every_call(configuration):
     text = BLINK.replace("END_CONFIGURATION", f"    {configuration}\nEND_CONFIGURATION")
     fast = _simulations(text)[0]
-    assert "ll_fb.PT = 50" in fast.compiled.source and "PT=50" not in fast.compiled.source
+    assert "ll_fb.PT = 50" in fast.compiled.source and "ll_pins(" not in fast.compiled.source
 
 
 def test_a_program_another_program_calls_keeps_its_stores():
@@ -232,4 +232,4 @@ def test_a_program_another_program_calls_keeps_its_stores():
         "PROGRAM Other\nMain();\nEND_PROGRAM\n"
     )
     fast = _simulations(text)[0]
-    assert "ll_fb.PT = 50" in fast.compiled.source and "PT=50" not in fast.compiled.source
+    assert "ll_fb.PT = 50" in fast.compiled.source and "ll_pins(" not in fast.compiled.source

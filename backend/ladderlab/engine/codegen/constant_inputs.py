@@ -1,13 +1,12 @@
 """Constant inputs stored once (issue 27): a standard FB's input that every call gives the same constant.
 
 A PROGRAM calling ``T1(IN := x, PT := T#5s)`` stores PT on every call, though between calls the pin holds T#5s
-anyway. Where nothing but those calls can write or read the pin, the instance is made with the constant in it
-(``ll_with(fb_TON(), PT=5000)``, at every initialisation) and the inlined calls of the fast and monitor variants
-leave the store out (the inlined body reads the constant itself). The debug variant, which calls ``execute``,
-still stores it. What differs from IEC is only what an online write or force changes: the next call would store
-the constant again, so ``Simulation`` marks the program instance and restores its constants before the next scan
-that runs it (``ConstantInputs``, engine/simulation.py); and before the first call, the pin shows the constant
-instead of the type's initial value.
+anyway. Where nothing but those calls can write or read the pin, the pin is set when the instance is made, at every
+initialisation (``ll_pins(self, 'v_T1 v_T2', 'PT', 5000)`` in ``ll_init``, pou.py), and the inlined calls of the
+fast and monitor variants leave the store out (the inlined body reads the constant itself). The debug variant,
+which calls ``execute``, still stores it. What an online write, force or injected fault changes, IEC's next call
+would store over: ``StoredOnce`` (engine/stored_once.py) puts the constants back before the next scan that runs the
+program. Before the first call the pin shows the constant instead of the type's initial value.
 
 A pin qualifies when its instance is a VAR of a PROGRAM without jumps or RETURN, not called from any POU, whose
 every call of the instance is a statement of a network (or ST body) itself, not nested in a condition or loop,
@@ -67,32 +66,41 @@ def _program_pins(module: ModuleContext, pou: ir.Pou) -> dict[str, tuple[tuple[s
     found = module.mentions(pou)
     if found.jumps or found.returns or not found.fb_calls:
         return {}
-    layout = module.layouts[pou.name.upper()]
-    top = {id(s) for block in pou.blocks for s in block.statements if type(s) is ir.FbCall}
+    places, nested = module.layouts[pou.name.upper()].places, found.nested_fb_calls
     pins: dict[str, dict[str, ir.Const] | None] = {}
     for s in found.fb_calls:
         var = s.instance
-        place = layout.get(var.name) if var.scope == "local" and not var.path else None
-        if place is None or place.slot.var_class != "VAR" or not isinstance(place.slot.type, t.FbInstance):
+        place = places.get(var.name.upper()) if var.scope == "local" and not var.path else None
+        if place is None or place.slot.var_class != "VAR" or type(place.slot.type) is not t.FbInstance:
             continue
         slot, fb = var.name.upper(), place.slot.type.fb
-        if std_fb_class(fb) is None or id(s) not in top or s.en is not None or s.body is not None:
+        if id(s) in nested or s.en is not None or s.body is not None or std_fb_class(fb) is None:
             pins[slot] = None
             continue
-        constants = {
-            pin.upper(): value
-            for pin, value in s.inputs
-            if type(value) is ir.Const and type(value.value) in _SCALARS and value.type == std_pin_type(fb, pin)
-        }
+        constants = {}
+        for pin, value in s.inputs:
+            if type(value) is ir.Const and type(value.value) in _SCALARS:
+                pin = pin.upper()
+                wanted = std_pin_type(fb, pin)
+                if value.type is wanted or value.type == wanted:
+                    constants[pin] = value
         before = pins.get(slot)
         if before is not None:
             constants = {p: c for p, c in constants.items() if p in before and before[p] == c}
         pins[slot] = None if slot in pins and before is None else constants
+    stored: dict[tuple, tuple[str, object]] = {}  # (pin, value, its Python type, IR type) -> the pin's constant
     return {
-        slot: tuple(sorted((pin, store_value(c.value, c.type)) for pin, c in kept.items()))
-        for slot, kept in pins.items()
-        if kept
+        slot: tuple(sorted(_stored(stored, pin, c) for pin, c in kept.items())) for slot, kept in pins.items() if kept
     }
+
+
+def _stored(stored: dict[tuple, tuple[str, object]], pin: str, c: ir.Const) -> tuple[str, object]:
+    """(pin, the constant as the pin stores it), converted once per distinct constant (10,000 timers: one T#100ms)."""
+    key = (pin, c.value, type(c.value), c.type)
+    found = stored.get(key)
+    if found is None:
+        found = stored[key] = (pin, store_value(c.value, c.type))
+    return found
 
 
 _SCALARS = (bool, int, float)
@@ -133,5 +141,5 @@ def _add(var: ir.Var, pairs: set[tuple[str, str]], wholes: set[str]) -> None:
             member = selector.name.upper()
             pairs.add((name, member))
             name = member
-    if isinstance(var.type, t.FbInstance):
+    if type(var.type) is t.FbInstance:
         wholes.add(name)

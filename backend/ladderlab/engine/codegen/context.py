@@ -155,6 +155,15 @@ class ModuleContext:
         return constant_inputs(self)
 
     @cached_property
+    def constant_pin_names(self) -> dict[tuple[str, str], frozenset[str]]:
+        """(POU, instance) -> the names of the pins ``constant_pins`` holds for it (what its calls do not store)."""
+        return {
+            (pou, slot): frozenset(pin for pin, _ in held)
+            for pou, instances in self.constant_pins.items()
+            for slot, held in instances.items()
+        }
+
+    @cached_property
     def constant_slots(self) -> dict[int, tuple[tuple[str, object], ...]]:
         """``constant_pins`` by the id of the instance's ``ir.Slot`` (its initialisation sets them)."""
         pins = self.constant_pins

@@ -153,6 +153,7 @@ class Mentions:
     fb_calls: tuple[ir.FbCall, ...]
     jumps: bool
     returns: bool  # whether it has a RETURN (a statement after it may not run)
+    nested_fb_calls: frozenset[int]  # the ids of its FB calls inside another statement (not run on every run)
     paths: tuple[ir.Var, ...]  # the variables it names with a path (``T1.PT``, ``A[i]``), FB calls' instances aside
     whole_fbs: frozenset[str]  # upper-case names of the FB instances it names whole (passed, ADR()), last member's
 
@@ -169,6 +170,7 @@ def mentions(pou: ir.Pou) -> Mentions:
         tuple(walked.fb_calls),
         walked.jumps,
         walked.returns,
+        frozenset(walked.nested_fb_calls),
         tuple(walked.paths),
         frozenset(walked.whole_fbs),
     )
@@ -185,6 +187,8 @@ class Walk:
         self.returns = False
         self.paths: list[ir.Var] = []
         self.whole_fbs: set[str] = set()
+        self.nested_fb_calls: set[int] = set()  # ids of the FB calls inside another statement (IF, loop...)
+        self._depth = 0
 
     def statements(self, statements: list[ir.Stmt]) -> None:
         for s in statements:
@@ -193,6 +197,8 @@ class Walk:
                     continue
             elif type(s) is ir.FbCall:
                 self.fb_calls.append(s)
+                if self._depth:
+                    self.nested_fb_calls.add(id(s))
             elif type(s) is ir.Jump:
                 self.jumps = True
             elif type(s) is ir.Return:
@@ -201,8 +207,10 @@ class Walk:
                 if e is not None:
                     self.expression(e)
             if not isinstance(s, _LEAVES):
+                self._depth += 1
                 for body in nested(s):
                     self.statements(body)
+                self._depth -= 1
 
     def expression(self, e: ir.Expr) -> None:
         if type(e) is ir.Var:

@@ -807,9 +807,8 @@ class Statements:
         """The inputs of a standard FB call that its instance holds from its initialisation on, so an inlined call
         does not store them (constant_inputs.py; not in the debug variant, which calls ``execute``)."""
         if self.module.debug or s.instance.scope != "local" or s.instance.path:
-            return frozenset()
-        pins = self.module.constant_pins.get(self.scope.pou.name.upper(), {}).get(s.instance.name.upper())
-        return frozenset(pin for pin, _ in pins) if pins else frozenset()
+            return _NONE_STORED
+        return self.module.constant_pin_names.get((self.scope.pou.name.upper(), s.instance.name.upper()), _NONE_STORED)
 
     def _eno(self, s: ir.FbCall | ir.FnCall) -> ir.Var | None:
         """The call's ENO target, None when it has none or its store is dead where no probe is recorded."""
@@ -932,6 +931,9 @@ _PLAIN_CHAIN = re.compile(r"[A-Za-z_]\w*(?:\.\w+)*")
 #: An inlined FB body's last line when it stores one output at the body's top level (``ll_fb.Q = ll_fb.CV >= 5``;
 #: not ``ll_fb._running = ll_fb.Q = False``)
 _OUTPUT_STORE = re.compile(r"(ll_fb\.[A-Za-z]\w*) = ((?:(?! = ).)+)")
+
+
+_NONE_STORED: frozenset[str] = frozenset()
 
 
 def _local_or_constant(code: str) -> bool:
