@@ -88,13 +88,17 @@ def _program_pins(module: ModuleContext, pou: ir.Pou) -> dict[str, tuple[tuple[s
         if before is not None:
             constants = {p: c for p, c in constants.items() if p in before and before[p] == c}
         pins[slot] = None if slot in pins and before is None else constants
-    stored: dict[tuple, tuple[str, object]] = {}  # (pin, value, its Python type, IR type) -> the pin's constant
+    stored: _Converted = {}
     return {
         slot: tuple(sorted(_stored(stored, pin, c) for pin, c in kept.items())) for slot, kept in pins.items() if kept
     }
 
 
-def _stored(stored: dict[tuple, tuple[str, object]], pin: str, c: ir.Const) -> tuple[str, object]:
+#: (pin, value, its Python type, IR type) -> (pin, the value as the pin stores it)
+_Converted = dict[tuple[str, object, type, object], tuple[str, object]]
+
+
+def _stored(stored: _Converted, pin: str, c: ir.Const) -> tuple[str, object]:
     """(pin, the constant as the pin stores it), converted once per distinct constant (10,000 timers: one T#100ms)."""
     key = (pin, c.value, type(c.value), c.type)
     found = stored.get(key)

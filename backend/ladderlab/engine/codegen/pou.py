@@ -16,7 +16,7 @@ the debug variant they are generators.
 from __future__ import annotations
 
 import re
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from contextlib import contextmanager, nullcontext
 
 from ...ir import nodes as ir
@@ -28,7 +28,7 @@ from .constructors import construct
 from .context import CodegenError, ModuleContext, diagnostic
 from .deferred import deferred_probes
 from .expressions import literal
-from .layout import slots_source
+from .layout import Place, slots_source
 from .mentions import boxed_locals
 from .scope import Scope, framed_variables, global_owner
 from .source import LazyPiece, Source
@@ -245,7 +245,7 @@ def _plain_inits(module: ModuleContext, places: list, target, owner: str, src: S
     _pin_constants(module, places, target, src)
 
 
-def _pin_constants(module: ModuleContext, places: list, target, src: Source) -> None:
+def _pin_constants(module: ModuleContext, places: list[Place], target: Callable[[Place], str], src: Source) -> None:
     """The constant inputs the standard FB instances among ``places`` hold from their making on (constant_inputs.py),
     set once they are made: one ``ll_pins`` per object, pin and value (``ll_pins(self, 'v_T0 v_T1', 'PT', 100)``),
     which compiles as one call where ``ll_with(fb_TON(), PT=100)`` per instance costs a call each."""
