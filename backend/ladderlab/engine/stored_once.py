@@ -4,8 +4,10 @@ The fast and monitor variants leave out the store of a standard FB input that ev
 (codegen/constant_inputs.py): the instance is made holding it. IEC's next call would store the constant again
 after an online write, force or release of such a pin, so ``Simulation`` tells ``StoredOnce`` what it wrote
 (``touched``) and, before a scan runs a program instance it marked, calls ``restore``: the pins get their
-constants back before the program runs (and before the forces are applied, so a force still wins). A scan with no
-write before it costs one test of an empty set.
+constants back before the program runs (and before the forces are applied, so a force still wins). An injected
+fault on such a pin (``injected``) is applied before each scan as a force is, and the call would store over it:
+``restore_faulted`` puts the constants back after each scan that ran the program. A scan with no write before it
+costs one test of an empty set.
 """
 
 from __future__ import annotations
