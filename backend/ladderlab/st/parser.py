@@ -256,7 +256,12 @@ def _finish(
 ) -> ParseResult:
     """``depth``: how deeply the AST is known to nest (expression levels; no statements), when it is; ``place``:
     what the text is for the call_after_init attribute (st/pragmas.py)."""
-    result.diagnostics += misplaced_call_after_init(original, file, pou, place)
+    interfaces = (
+        [(i.span.line, i.span.end_line) for i in result.ast.items if isinstance(i, ast.InterfaceDecl)]
+        if place == "source" and isinstance(result.ast, ast.Source)
+        else []
+    )
+    result.diagnostics += misplaced_call_after_init(original, file, pou, place, interfaces)
     if result.ast is not None and (
         depth > limits.EXPRESSION_DEPTH.value if depth is not None else _may_nest_too_deep(result, original)
     ):
