@@ -12,7 +12,8 @@
 * **blark**, a second ST parser: see ``parse.py``, which compares it on the texts both accept.
 
 Every figure is the CPU time per scan of a batch of scans, the contenders taking turns batch by batch in the
-same process (so a load change hits them alike), best of the rounds; run with ``.venv/bin/python
+same process (so a load change hits them alike), each batch after one untimed warm-up scan of its own contender
+(every contender alike: the batch before it was another's), best of the rounds; run with ``.venv/bin/python
 benchmarks/peers.py`` (``LADDERLAB_ROOT=/path/to/base`` measures that checkout's engine with these benchmarks).
 """
 
@@ -99,6 +100,9 @@ def handwritten(networks: int, timed: int = TIMED_EVERY) -> tuple[list[object], 
 
 
 def _per_scan_us(run: Callable[[int], None], scans: int) -> float:
+    """CPU time per scan of a batch of ``scans``, after one scan untimed: the contenders take turns, so each batch
+    would otherwise start on caches the others' batches filled (a larger program paying more for it)."""
+    run(1)
     start = time.thread_time()
     run(scans)
     return (time.thread_time() - start) / scans * 1e6

@@ -250,6 +250,20 @@ def test_above_a_program_in_an_st_file_it_is_an_error_where_it_stands():
     ]
 
 
+def test_above_a_method_of_an_interface_it_is_an_error_where_it_stands_in_the_file_and_in_the_types():
+    """An INTERFACE's METHOD is a prototype no instance runs: CODESYS puts the attribute on the function block's
+    method. Reported at the attribute in an ST file and, for a project whose types text holds it, by the check."""
+    interface = f"INTERFACE I\n{ATTRIBUTE}\nMETHOD Setup\nEND_METHOD\nEND_INTERFACE\n"
+    project, diagnostics = source_to_project(f"{interface}PROGRAM Main\nVAR x : INT; END_VAR\nEND_PROGRAM\n", "oo")
+    why = _message("on a method of an INTERFACE")
+    assert [(d.code, d.line, d.column, d.message) for d in diagnostics] == [("ST-PRAGMA", 2, 1, why)]
+    assert project is not None
+    checked = build_project(project.model_copy(update={"types": interface}))
+    assert [(d.code, d.file, d.line, d.column, d.message) for d in checked.diagnostics] == [
+        ("ST-PRAGMA", "types", 2, 1, why)
+    ]
+
+
 def test_on_a_function_block_alone_it_is_a_warning():
     built = build_project(source_to_project(_fb(), "oo")[0])
     assert [(d.severity, d.code, d.file, d.line) for d in built.diagnostics] == [

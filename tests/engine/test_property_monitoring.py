@@ -322,3 +322,23 @@ END_PROGRAM
         ("warning", "Main/body", 11, 1, "the attribute 'monitoring' has no effect here" + tail),
         ("warning", "Pump.Start/declarations", 1, 1, "the attribute 'monitoring' has no effect on a method" + tail),
     ]
+
+
+def test_the_attribute_on_an_interfaces_property_is_a_located_warning():
+    """An INTERFACE's property is a prototype: no instance of it holds a value to show."""
+    text = """
+INTERFACE ILevel
+{attribute 'monitoring' := 'call'}
+PROPERTY Level : INT
+GET
+END_GET
+END_PROPERTY
+END_INTERFACE
+PROGRAM Main
+END_PROGRAM
+"""
+    project, problems = source_to_project(text, "monitoring")
+    assert project is not None
+    assert [(d.code, d.severity, d.line, d.column, d.message.split(":")[0]) for d in problems] == [
+        ("ST-PRAGMA", "warning", 3, 1, "the attribute 'monitoring' has no effect on a property of an INTERFACE")
+    ]

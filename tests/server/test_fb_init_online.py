@@ -7,7 +7,9 @@ import time
 
 from fastapi.testclient import TestClient
 
+from ladderlab.simulation.build import build_project
 from ladderlab.simulation.registry import SimulationRegistry
+from ladderlab.simulation.runner import SimRunner
 from ladderlab.st.project_text import source_to_project
 from ladderlab.storage import Workspace
 
@@ -63,6 +65,23 @@ def test_a_fault_in_fb_init_faults_the_simulation_at_its_start_and_again_after_a
     assert detail(refused)["message"] == "the simulation stopped on a fault: reset it before running"
     reset = client.post(f"/api/simulations/{sim}/reset", json={"cold": True}).json()
     assert reset["state"] == "faulted"
+
+
+def test_the_ready_message_of_a_simulation_whose_fb_init_faulted_says_faulted() -> None:
+    """The process sends its runner's info ("ready") before the engine thread first accounts for what the engine
+    did: a fault of FB_init at the start is in it already (it said "stopped" until the next frame, and the test
+    above failed now and then)."""
+
+    class Sink:
+        def status(self, *args: object) -> None: ...
+        def log(self, entry: object) -> None: ...
+        def frame(self, *args: object, **kwargs: object) -> None: ...
+
+    project, _ = source_to_project(SOURCE.format(d=0), "scaled")
+    build = build_project(project, variant="monitor")
+    runner = SimRunner(build.simulation(), Sink())
+    info = runner.info()
+    assert (info["state"], info["fault"]["pou"]) == ("faulted", "SCALE.FB_INIT")
 
 
 AFTER_INIT = """{attribute 'call_after_init'}

@@ -68,6 +68,7 @@ from .paths import (
 )
 from .process_image import AREA_ORDER, IoPoint, ProcessImage, key_of, located_address, view_kind
 from .state import SimState, data_of, holds_references, restore_into, restore_list
+from .stored_once import StoredOnce
 from .tasks import DEFAULT_WATCHDOG_S, Schedule, Task, task_table
 
 #: Scan times are sampled: the wall clock is read around every SAMPLE_EVERY-th scan (the first included), so a
@@ -189,6 +190,7 @@ class Simulation:
         #: (instance, its own flags, its list of False) of the instances with a viewed network, until ``view``
         self._mutes: list[tuple[object, list[bool], list[bool]]] | None = None
         self._quiet_stamp = -1  # the stamp of the last scan that recorded no network (``quiet``)
+        self._stored_once = StoredOnce(self._context)  # constant FB inputs an online change may have overwritten
         self._attach_debugger()
         self._initialise(warm=False)
 
@@ -375,6 +377,14 @@ class Simulation:
             self._fit_recording()
         return self._scan_now(time_ms, due, scheduled=False)
 
+    def _program_instance(self, name: str) -> object:
+        return self._instances_by_path()[name][0]
+
+    @staticmethod
+    def _programs_run(tasks: list[Task]) -> list[str]:
+        """The program instances the scan runs of ``tasks`` (those a fault stopped run no more)."""
+        return [program for task in tasks if not task.stopped for program in task.programs]
+
     def _not_halted(self) -> None:
         if self.halted is not None:
             raise RuntimeError("the simulation is halted: resume(), step() or reset() first")
@@ -391,6 +401,8 @@ class Simulation:
                 self._apply_inputs()
             if self._lone is None:  # a listener (on_input, on_scan) switched to the debug variant
                 return done + self.cycle(n - done)
+            if self._stored_once.stale and not task.stopped:
+                self._stored_once.restore(task.programs, self._program_instance)
             if self._injections or self._forces:
                 self._cross()
             now = task.next_due
@@ -415,6 +427,8 @@ class Simulation:
                     self._watchdog.deadline, self._watchdog.limit_s = outer
                 if sampled:
                     stats.add((self._clock() - start) * 1000.0)
+                if self._stored_once.faulted and not task.stopped:
+                    self._stored_once.restore_faulted(task.programs, self._program_instance)
             if self._forces:
                 self._apply_forces()
             stats.count += 1
@@ -429,6 +443,8 @@ class Simulation:
         self._apply_inputs()
         if self._triggers:
             due = self._schedule.with_triggers(due, lambda task: self._triggers[task.name].get(self._roots))
+        if self._stored_once.stale and self.debugger is None:  # (the debug variant's calls store every input)
+            self._stored_once.restore(self._programs_run(due), self._program_instance)
         if self._has_inputs:  # (a program without %I addresses pays nothing per scan)
             self._image.read_inputs()
         plants = [task for task in due if task.plant]
@@ -447,6 +463,8 @@ class Simulation:
             if plants:
                 self._cross()
             self._run_tasks(control, now)
+            if self._stored_once.faulted:
+                self._stored_once.restore_faulted(self._programs_run(due), self._program_instance)
             self._finish((self._clock() - start) * 1000.0 if sampled else None)
             self._watchdog.deadline, self._watchdog.limit_s = outer
             return True
@@ -1094,6 +1112,8 @@ class Simulation:
 
     def _apply(self, event: InputEvent, location: Location | None, prepared: object, halted: bool) -> None:
         kind = event.kind
+        if kind in ("write", "panel", "force", "release", "release_all"):  # (a constant input's: stored_once.py)
+            self._stored_once.touched(location)
         if kind in ("write", "panel") and location is not None:
             _set(location, self._roots, prepared)
         elif kind == "force" and location is not None:
@@ -1105,6 +1125,7 @@ class Simulation:
             self._forces.clear()
         elif kind == "fault" and location is not None and isinstance(prepared, Injection):
             self._injections[location.path] = (location, prepared)
+            self._stored_once.injected(where for where, _ in self._injections.values())
         elif kind == "clear_fault":
             if location is None:
                 lifted = list(self._injections.values())
@@ -1114,6 +1135,7 @@ class Simulation:
                 lifted = [one] if one is not None else []
             for where, fault in lifted:  # the signal as its writer (a plant, a panel, a test) last left it
                 where.set(self._roots, fault.lifted(where.get(self._roots)))
+            self._stored_once.injected(where for where, _ in self._injections.values())
         scan = self.scan_count
         applied = (
             AppliedInput(event, scan, "halt", self._halt_pid, self._halts) if halted else AppliedInput(event, scan)
@@ -1222,6 +1244,8 @@ class Simulation:
             assert isinstance(fault, Injection)  # the event of a fault prepares an injection
             fault.set_state(carried)  # type: ignore[arg-type]  # the plain data Injection.state() gave
             self._injections[location.path] = (location, fault)
+        self._stored_once.everything()  # (captured after a write, a pin may hold another value)
+        self._stored_once.injected(where for where, _ in self._injections.values())
         self._pending = []
         for data in state.pending:
             event = InputEvent.from_json(data)

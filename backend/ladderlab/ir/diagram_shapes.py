@@ -157,7 +157,7 @@ class CallShapes:
             expr, ty = value
             if not isinstance(expr, Var):
                 return ("const", expr.value, ty)
-            leaf = Leaf(("wire", *_types(ty, expr.type)), expr, ty)
+            leaf = Leaf(("wire", *type_key(ty, expr.type)), expr, ty)
         elif isinstance(value, ast.Unary) and value.op == "NOT" and type(value.operand) is ast.Name:
             inner = self._variable(ops, value.operand.name, fb=False)
             if inner is None:
@@ -187,12 +187,12 @@ class CallShapes:
             return None
         value, ty = read
         if fb:
-            return Leaf(_fb_key(ty), value, ty)
+            return Leaf(fb_key(ty), value, ty)
         if type(ty) is not t.Elementary:
             return None
         if member is None:
-            return Leaf(("var", *_types(ty, value.type)), value, ty)
-        return Leaf(("pin", *_fb_key(symbol.type), member.upper(), *_types(ty, value.type)), value, ty)
+            return Leaf(("var", *type_key(ty, value.type)), value, ty)
+        return Leaf(("pin", *fb_key(symbol.type), member.upper(), *type_key(ty, value.type)), value, ty)
 
     def _name(self) -> str:
         self._count += 1
@@ -209,12 +209,12 @@ class CallShapes:
         return negated
 
 
-def _fb_key(ty: t.FbType) -> tuple:
+def fb_key(ty: t.FbType) -> tuple:
     """An FB type as part of a shape key: a standard and a user FB may share a name."""
     return "fb", ty.name.upper(), ty.std is not None
 
 
-def _types(st_type: t.Type, ir_type: IrType) -> tuple:
+def type_key(st_type: t.Type, ir_type: IrType) -> tuple:
     """A value's ST and IR type as part of a shape key: elementary ones by name (strings hash once; the type
     dataclasses hash field by field, and shape keys are hashed for every box)."""
     if type(st_type) is t.Elementary and type(ir_type) is Elementary:
@@ -222,7 +222,7 @@ def _types(st_type: t.Type, ir_type: IrType) -> tuple:
     return st_type, ir_type
 
 
-def _binder(node: Any, names: frozenset[str]) -> Callable[[dict[str, Expr]], Any] | None:
+def binder(node: Any, names: frozenset[str]) -> Callable[[dict[str, Expr]], Any] | None:
     """How to copy template IR ``node`` with its placeholders (``names``) bound; None when it holds none and is
     shared as it is (IR expressions are immutable). Only the nodes on a path to a placeholder are copied."""
     if type(node) is Var:
@@ -232,17 +232,18 @@ def _binder(node: Any, names: frozenset[str]) -> Callable[[dict[str, Expr]], Any
             return lambda bindings: bindings[node.name]
         return lambda bindings: _select(bindings[node.name], node)
     if type(node) in (list, tuple):
-        items = [_binder(item, names) for item in node]
+        items = [binder(item, names) for item in node]
         if not any(items):
             return None
         kind = type(node)
         return lambda bindings: kind(item if bind is None else bind(bindings) for item, bind in zip(node, items))
     if not isinstance(node, _COMPOSITE):
         return None
-    fields = {name: bind for name, value in node_fields(node).items() if (bind := _binder(value, names)) is not None}
-    return (
-        (lambda bindings: node_copy(node, {name: bind(bindings) for name, bind in fields.items()})) if fields else None
-    )
+    kind = type(node)  # (its constructor takes its fields in order: quick_init's, ~2x faster than node_copy)
+    parts = [(value, binder(value, names)) for value in (getattr(node, name) for name in kind.__slots__)]
+    if not any(bind for _, bind in parts):
+        return None
+    return lambda bindings: kind(*[value if bind is None else bind(bindings) for value, bind in parts])
 
 
 def _statement_binder(statement: Stmt, names: frozenset[str]) -> Callable[[dict[str, Expr], Origin], Stmt]:
@@ -250,7 +251,7 @@ def _statement_binder(statement: Stmt, names: frozenset[str]) -> Callable[[dict[
     fields = {
         name: bind
         for name, value in node_fields(statement).items()
-        if name != "origin" and (bind := _binder(value, names)) is not None
+        if name != "origin" and (bind := binder(value, names)) is not None
     }
     return lambda bindings, origin: node_copy(
         statement, {"origin": origin, **{name: bind(bindings) for name, bind in fields.items()}}

@@ -20,6 +20,7 @@ from .context import PouContext
 from .diagram_calls import Callee, check_call, lower_call, resolve_callee
 from .diagram_checks import canonical_label, check_jump_target, check_labels, check_unique_ids, check_unique_networks
 from .diagram_operands import At, Operands
+from .ld_templates import LdTemplates
 from .lower_expr import convert
 from .lower_st import fb_output, fb_pins
 from .nodes import Assign, Block, Expr, If, Jump, Origin, Probe, Return, Stmt, Var, diagram_origin
@@ -32,12 +33,14 @@ def lower_ld_body(pou: ModelPou, ctx: PouContext) -> list[Block]:
     body: ld.LdBody = pou.body  # type: ignore[assignment]
     ctx.places = Places(body)
     check_unique_networks(body.networks, ctx.report, "LD")
-    check_unique_ids(
-        ((i, n.id, e.id) for i, n in enumerate(body.networks, 1) for e in ld.walk(n.elements)), ctx.report, "LD"
-    )
+    ids = [e.id for n in body.networks for e in ld.walk(n.elements)]
+    if len(set(ids)) < len(ids):  # a repeated id, reported with its networks (no tuple each when none: issue 27)
+        check_unique_ids(
+            ((i, n.id, e.id) for i, n in enumerate(body.networks, 1) for e in ld.walk(n.elements)), ctx.report, "LD"
+        )
     labels = check_labels(body.networks, ctx.report, "LD")
-    rung = _Rung(ctx, Operands(ctx, "LD"), labels)
-    return [rung.lower(network) for network in body.networks]
+    templates = LdTemplates(_Rung(ctx, Operands(ctx, "LD"), labels))  # networks of one shape lowered once
+    return [templates.lower(network) for network in body.networks]
 
 
 class _Rung:

@@ -321,6 +321,20 @@ class TypeLowering:
     def slot(self, symbol: Symbol) -> Slot:
         """The slot of a declared variable; VAR_IN_OUT slots are references and have no initial value, nor has a
         located variable without one (its memory keeps what the process image holds)."""
+        ty, spec = symbol.type, symbol.type_spec
+        if (  # most variables: an elementary type by its name, no initial value (what the steps below make of it)
+            type(ty) is t.Elementary
+            and type(spec) is ast.NamedType
+            and symbol.init is None
+            and symbol.address is None
+            and symbol.init_args is None
+            and symbol.var_class != "VAR_IN_OUT"
+            and spec.name.upper() not in self.types
+        ):
+            lowered = _elementary(ty.name)
+            return Slot(
+                upper_name(symbol.name), symbol.var_class, lowered, ir_default(lowered), symbol.retain, symbol.constant
+            )
         located = symbol.address is not None and not incomplete(symbol.address)  # %I*: an ordinary variable
         if symbol.var_class == "VAR_IN_OUT" or (located and symbol.init is None):
             initial = None

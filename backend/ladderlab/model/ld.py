@@ -7,7 +7,6 @@ every edit reflows cleanly and the files diff well in git.
 
 from __future__ import annotations
 
-from collections.abc import Iterator
 from typing import Annotated, Any, Literal
 
 from pydantic import ConfigDict, Field, model_validator
@@ -130,15 +129,22 @@ def _deepest(elements: Any) -> str | None:
     return None
 
 
-def walk(elements: list[LdElement]) -> Iterator[LdElement]:
-    """Every element of a series list, nested ones (parallel branches, box inputs) included, left to right."""
+def walk(elements: list[LdElement]) -> list[LdElement]:
+    """Every element of a series list, nested ones (parallel branches, box inputs) included, left to right. (A list
+    gathered by plain recursion: nested generators cost ~0.25 s over the 50,000 networks of issue 27's build.)"""
+    found: list[LdElement] = []
+    _gather(elements, found)
+    return found
+
+
+def _gather(elements: list[LdElement], found: list[LdElement]) -> None:
     for element in elements:
-        yield element
+        found.append(element)
         kind = element.type  # (the tag, not isinstance: the pydantic classes check through ABCMeta)
         if kind == "parallel":
             for branch in element.branches:  # type: ignore[union-attr]  # the tag says Parallel
-                yield from walk(branch)
+                _gather(branch, found)
         elif kind == "box":
             for value in element.inputs.values():  # type: ignore[union-attr]  # the tag says Box
                 if isinstance(value, list):
-                    yield from walk(value)
+                    _gather(value, found)

@@ -298,24 +298,22 @@ class History:
         self._restore(checkpoint)
         replay.view(self.viewed)
         self._replay_viewed = self.viewed
-        self._replay_scans(checkpoint.scan, scan, records_from=scan - 1)
+        self._replay_scans(checkpoint.scan, scan)
         self._replay_at = None
         return [fault.text() for fault in replay.faults if fault.scan == scan] == self._quiet_errors[scan]
 
-    def _replay_scans(self, first: int, last: int, records_from: int | None = None) -> None:
-        """Run scans ``first`` to ``last`` again in the replay, each fed its recorded inputs. Only the last (those
-        from ``records_from`` on) records the viewed networks' power flow: it is the scan a seek shows
-        (``Simulation.record``)."""
+    def _replay_scans(self, first: int, last: int) -> None:
+        """Run scans ``first`` to ``last`` again in the replay, each fed its recorded inputs. Every one records the
+        viewed networks' power flow: what a seek shows of an element the last scan did not run (an SFC transition's
+        last computed condition, a probe's last value) is what the scans before it left, as live."""
         replay = self._replay_sim()
         for number in range(first, last + 1):
             for line in self._inputs.get(number, ()):
                 replay.submit(InputEvent.from_json(json.loads(line)))
-            replay.record(number >= (last if records_from is None else records_from))
             if number in self._times:
                 replay.scan_at(self._times[number])
             else:
                 replay.cycle(1)
-        replay.record(True)
 
     def stepper(self, scan: int, debug: CompiledProgram) -> Simulation:
         """A new simulation of ``debug`` (the program's debug variant) at the start of ``scan``: the state the scan

@@ -331,8 +331,8 @@ class SimRunner:
     def _state(self) -> str:
         if self.sim.halted is not None:
             return "halted"
-        if self._faulted:
-            return "faulted"
+        if self._faulted or len(self.sim.faults) > self._seen_faults:  # (a fault _settle has not seen yet: FB_init's,
+            return "faulted"  # before the first _settle, is in the "ready" message's info)
         return "running" if self._running else "stopped"
 
     def info(self) -> dict[str, Any]:

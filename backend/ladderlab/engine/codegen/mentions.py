@@ -152,22 +152,43 @@ class Mentions:
     in_out_args: tuple[ir.Var, ...]  # what its function and method calls pass to a VAR_IN_OUT
     fb_calls: tuple[ir.FbCall, ...]
     jumps: bool
+    returns: bool  # whether it has a RETURN (a statement after it may not run)
+    nested_fb_calls: frozenset[int]  # the ids of its FB calls inside another statement (not run on every run)
+    paths: tuple[ir.Var, ...]  # the variables it names with a path (``T1.PT``, ``A[i]``), FB calls' instances aside
+    whole_fbs: frozenset[str]  # upper-case names of the FB instances it names whole (passed, ADR()), last member's
 
 
 def mentions(pou: ir.Pou) -> Mentions:
     """One walk over the POU's statements and their expressions (plain recursion, as ``calls_in``)."""
-    walked = _Walk()
+    walked = Walk()
     for block in pou.blocks:
         walked.statements(block.statements)
-    return Mentions(pou, frozenset(walked.addressed), tuple(walked.in_outs), tuple(walked.fb_calls), walked.jumps)
+    return Mentions(
+        pou,
+        frozenset(walked.addressed),
+        tuple(walked.in_outs),
+        tuple(walked.fb_calls),
+        walked.jumps,
+        walked.returns,
+        frozenset(walked.nested_fb_calls),
+        tuple(walked.paths),
+        frozenset(walked.whole_fbs),
+    )
 
 
-class _Walk:
+class Walk:
+    """What ``mentions`` collects, from any statements (a task's body too)."""
+
     def __init__(self) -> None:
         self.addressed: set[str] = set()
         self.in_outs: list[ir.Var] = []
         self.fb_calls: list[ir.FbCall] = []
         self.jumps = False
+        self.returns = False
+        self.paths: list[ir.Var] = []
+        self.whole_fbs: set[str] = set()
+        self.nested_fb_calls: set[int] = set()  # ids of the FB calls inside another statement (IF, loop...)
+        self._depth = 0
 
     def statements(self, statements: list[ir.Stmt]) -> None:
         for s in statements:
@@ -176,17 +197,29 @@ class _Walk:
                     continue
             elif type(s) is ir.FbCall:
                 self.fb_calls.append(s)
+                if self._depth:
+                    self.nested_fb_calls.add(id(s))
             elif type(s) is ir.Jump:
                 self.jumps = True
+            elif type(s) is ir.Return:
+                self.returns = True
             for e in own_expressions(s):
                 if e is not None:
                     self.expression(e)
             if not isinstance(s, _LEAVES):
+                self._depth += 1
                 for body in nested(s):
                     self.statements(body)
+                self._depth -= 1
 
     def expression(self, e: ir.Expr) -> None:
         if type(e) is ir.Var:
+            if type(e.type) is t.FbInstance:
+                self.whole_fbs.add(
+                    e.path[-1].name.upper() if e.path and type(e.path[-1]) is ir.Member else e.name.upper()
+                )
+            if e.path:
+                self.paths.append(e)
             for selector in e.path:
                 if type(selector) is ir.Index:
                     for index in selector.indices:

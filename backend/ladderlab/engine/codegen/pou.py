@@ -16,7 +16,7 @@ the debug variant they are generators.
 from __future__ import annotations
 
 import re
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from contextlib import contextmanager, nullcontext
 
 from ...ir import nodes as ir
@@ -27,7 +27,8 @@ from .chunks import plan as chunk_plan
 from .constructors import construct
 from .context import CodegenError, ModuleContext, diagnostic
 from .deferred import deferred_probes
-from .layout import slots_source
+from .expressions import literal
+from .layout import Place, slots_source
 from .mentions import boxed_locals
 from .scope import Scope, framed_variables, global_owner
 from .source import LazyPiece, Source
@@ -241,6 +242,23 @@ def _plain_inits(module: ModuleContext, places: list, target, owner: str, src: S
             src.line(f"{code} = {value}")
     if run:
         _fill(holder, run, shared, src)
+    _pin_constants(module, places, target, src)
+
+
+def _pin_constants(module: ModuleContext, places: list[Place], target: Callable[[Place], str], src: Source) -> None:
+    """The constant inputs the standard FB instances among ``places`` hold from their making on (constant_inputs.py),
+    set once they are made: one ``ll_pins`` per object, pin and value (``ll_pins(self, 'v_T0 v_T1', 'PT', 100)``),
+    which compiles as one call where ``ll_with(fb_TON(), PT=100)`` per instance costs a call each."""
+    constants = module.constant_slots
+    if not constants:
+        return
+    runs: dict[tuple[str, str, str], list[str]] = {}
+    for place in [place for place in places if id(place.slot) in constants]:
+        holder, _, attr = target(place).rpartition(".")
+        for pin, value in constants[id(place.slot)]:
+            runs.setdefault((holder, pin, literal(value)), []).append(attr)
+    for (holder, pin, value), attrs in runs.items():
+        src.line(f"ll_pins({holder}, {' '.join(attrs)!r}, {pin!r}, {value})")
 
 
 def _fill(holder: str, attrs: list[str], value: str, src: Source) -> None:

@@ -171,6 +171,13 @@ def fill(obj: object, attributes: str, value: object) -> None:
         setattr(obj, name, value)
 
 
+def pins(obj: object, attributes: str, pin: str, value: object) -> None:
+    """Set the input ``pin`` of the FB instance in each of the space-separated ``attributes`` of ``obj`` to ``value``
+    (constant inputs stored once, codegen/constant_inputs.py)."""
+    for name in attributes.split():
+        setattr(getattr(obj, name), pin, value)
+
+
 def for_range(start: int, end: int, step: int) -> range:
     """The values a FOR loop visits (ST-70): computed up front, so a counter at its type's limit cannot wrap forever."""
     if step > 0:
@@ -470,6 +477,7 @@ def namespace() -> dict[str, object]:
         ll_assign=assign_into,
         ll_with=with_values,
         ll_fill=fill,
+        ll_pins=pins,
         ll_for_range=for_range,
         ll_ref=dummy_reference,
         ll_Ref=Ref,

@@ -762,8 +762,9 @@ class Statements:
             fb = "ll_fb"  # FB calls do not nest: one temporary serves them all
             self.src.line(f"{fb} = {code}")
             known = []
+            once = self.stored_once(s) if inline_body(ty.fb, fb, self.now) is not None else frozenset()
             for pin, value in s.inputs:
-                assigned = self._fb_input(fb, ty, user, pin, value)
+                assigned = self._fb_input(fb, ty, user, pin, value, pin.upper() not in once)
                 if assigned is not None and _local_or_constant(assigned[1]):
                     known.append(assigned)
             call = f"{fb}.execute({self.now})"
@@ -802,6 +803,13 @@ class Statements:
         if s.en is None and user is None and not self.debug and _PLAIN_CHAIN.fullmatch(code):
             self.x.alias = (code, "ll_fb")  # the outputs read next: ``ll_fb.Q``, not ``self.v_T1.Q`` again
 
+    def stored_once(self, s: ir.FbCall) -> frozenset[str]:
+        """The inputs of a standard FB call that its instance holds from its initialisation on, so an inlined call
+        does not store them (constant_inputs.py; not in the debug variant, which calls ``execute``)."""
+        if self.module.debug or s.instance.scope != "local" or s.instance.path:
+            return _NONE_STORED
+        return self.module.constant_pin_names.get((self.scope.pou.name.upper(), s.instance.name.upper()), _NONE_STORED)
+
     def _eno(self, s: ir.FbCall | ir.FnCall) -> ir.Var | None:
         """The call's ENO target, None when it has none or its store is dead where no probe is recorded."""
         return None if self.probes is None and id(s) in self.dead else s.eno
@@ -825,9 +833,10 @@ class Statements:
             self.src.line(f"{fb}.ll_pr, {fb}.ll_px = {saved}")
 
     def _fb_input(
-        self, fb: str, ty: t.FbInstance, user: ir.Pou | None, pin: str, value: ir.Expr
+        self, fb: str, ty: t.FbInstance, user: ir.Pou | None, pin: str, value: ir.Expr, store: bool = True
     ) -> tuple[str, str] | None:
-        """Assign an input pin; returns (attribute of ``fb``, code assigned) for a scalar input of ``fb`` itself."""
+        """Assign an input pin (``store`` False: the instance holds it already, ``stored_once``); returns (attribute
+        of ``fb``, code assigned) for a scalar input of ``fb`` itself."""
         owner, attr = self.x.member_parts(fb, ty, pin)
         pin_type = self.x.member_type(ty, pin)
         if user is not None:
@@ -845,7 +854,8 @@ class Statements:
             self.src.line(f"ll_assign({owner}.{attr}, {store_whole(self.x.expr(value), value.type, pin_type)})")
             return None
         code = self.x.stored(value, pin_type)
-        self.src.line(f"{owner}.{attr} = {code}")
+        if store:
+            self.src.line(f"{owner}.{attr} = {code}")
         return (attr, code) if owner == fb else None
 
     def _copy_out(
@@ -921,6 +931,9 @@ _PLAIN_CHAIN = re.compile(r"[A-Za-z_]\w*(?:\.\w+)*")
 #: An inlined FB body's last line when it stores one output at the body's top level (``ll_fb.Q = ll_fb.CV >= 5``;
 #: not ``ll_fb._running = ll_fb.Q = False``)
 _OUTPUT_STORE = re.compile(r"(ll_fb\.[A-Za-z]\w*) = ((?:(?! = ).)+)")
+
+
+_NONE_STORED: frozenset[str] = frozenset()
 
 
 def _local_or_constant(code: str) -> bool:

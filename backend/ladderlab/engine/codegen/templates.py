@@ -158,7 +158,7 @@ class _Shape:
 
     def __init__(self, st: Statements) -> None:
         self.place = st.scope.placed
-        self.dead, self.folds = st.dead, st.folds
+        self.dead, self.folds, self.once = st.dead, st.folds, st.stored_once
         self.codes: dict[str, int] = {}
         self.walked: list[ir.Stmt] = []
 
@@ -181,7 +181,18 @@ class _Shape:
         if kind is ir.FbCall:
             inputs = tuple([(pin, value(e)) for pin, e in s.inputs])
             outputs = tuple([(pin, self.var(v)) for pin, v in s.outputs])
-            return (kind, id(s) in self.dead, self.var(s.instance), inputs, outputs, value(s.en), value(s.eno), s.body)
+            once = self.once(s)  # (by the instance's name: constant_inputs.py)
+            return (
+                kind,
+                id(s) in self.dead,
+                self.var(s.instance),
+                inputs,
+                outputs,
+                value(s.en),
+                value(s.eno),
+                s.body,
+                once,
+            )
         if kind is ir.FnCall:
             return (kind, id(s) in self.dead, value(s.call), value(s.target), value(s.en), value(s.eno))
         raise _Unshaped
