@@ -13,7 +13,8 @@ from __future__ import annotations
 
 import pytest
 
-from ladderlab.engine.paths import GetterFault, NoTarget, UnknownPath
+from ladderlab.engine.inputs import InputRefused
+from ladderlab.engine.paths import AccessorFault, NoTarget, UnknownPath
 from ladderlab.engine.simulation import Simulation
 from ladderlab.ir.lower_project import lower_project
 from ladderlab.simulation.build import build_project
@@ -121,7 +122,7 @@ def test_call_runs_the_get_at_each_read_between_scans():
 def test_a_fault_in_the_get_is_a_located_error_for_that_value_and_the_program_runs_on():
     sim = run(TANK)
     sim.cycle(1)
-    with pytest.raises(GetterFault) as fault:
+    with pytest.raises(AccessorFault) as fault:
         sim.read("Main.t.Share")
     message = str(fault.value)
     assert message.startswith(
@@ -342,3 +343,53 @@ END_PROGRAM
     assert [(d.code, d.severity, d.line, d.column, d.message.split(":")[0]) for d in problems] == [
         ("ST-PRAGMA", "warning", 3, 1, "the attribute 'monitoring' has no effect on a property of an INTERFACE")
     ]
+
+
+VALVE = """
+FUNCTION_BLOCK Valve
+VAR pos : INT; sets : INT; END_VAR
+{attribute 'monitoring' := 'call'}
+PROPERTY Opening : INT
+GET
+Opening := pos;
+END_GET
+SET
+sets := sets + 1;
+pos := 1000 / Opening;
+END_SET
+END_PROPERTY
+END_FUNCTION_BLOCK
+PROGRAM Main
+VAR v : Valve; n : INT; END_VAR
+n := n + 1;
+END_PROGRAM
+"""
+
+
+def test_writing_call_runs_its_set_once_between_scans_and_a_fault_in_it_is_located():
+    """CODESYS: 'call' is "read or written by calling the property": the write runs the SET before the next scan
+    (1000 / 4 = 250); a SET dividing by the 0 written faults where it divides, the tasks go on."""
+    sim = run(VALVE)
+    sim.write("Main.v.Opening", 4)
+    assert sim.read("Main.v.sets") == 0  # not yet: at the next scan's start
+    sim.cycle(1)
+    assert [sim.read(p) for p in ("Main.v.Opening", "Main.v.pos", "Main.v.sets", "Main.n")] == [250, 250, 1, 1]
+    sim.write("Main.v.Opening", 0)
+    sim.cycle(1)
+    assert [sim.read(p) for p in ("Main.v.pos", "Main.v.sets", "Main.n")] == [250, 2, 2]
+    assert sim.faults == []
+    [fault] = sim.accessor_faults
+    assert fault.text().startswith(
+        f"division by zero: 1000 / 0 at POU VALVE.OPENING.SET, line {VALVE.splitlines().index('pos := 1000 / Opening;') + 1} "
+        "column 1"
+    )
+
+
+def test_a_call_property_is_not_forced_nor_faulted():
+    sim = run(VALVE)
+    with pytest.raises(InputRefused) as refused:
+        sim.force("Main.v.Opening", 4)
+    assert str(refused.value) == (
+        "MAIN.V.OPENING is a property monitored as 'call': a write runs its SET once, and no variable holds its value "
+        "to force"
+    )

@@ -104,8 +104,8 @@ def test_writing_a_monitored_property_is_refused_with_the_reason(client: TestCli
         ws.send_json({"type": "write", "path": "Main.t.Share", "value": 1})
         error, _ = recv_until(ws, of_type("error"))
         assert error["message"] == (
-            "MAIN.T.SHARE cannot be written: a property monitored as 'call' is read by running its GET; it is not "
-            "written online (a SET is code)"
+            "MAIN.T.SHARE cannot be written: a property monitored as 'call' is written by running its SET, and it "
+            "has none"
         )
 
 
@@ -160,3 +160,51 @@ def test_the_history_finds_a_variable_propertys_changes_and_refuses_a_called_one
         "MAIN.T.SHARE is a property monitored as 'call': finding its changes would run its GET on every recorded "
         "scan; use 'variable' (its last value is recorded) or the variables its GET reads"
     )
+
+
+VALVE = """
+FUNCTION_BLOCK Valve
+VAR pos : INT; END_VAR
+{attribute 'monitoring' := 'call'}
+PROPERTY Opening : INT
+GET
+Opening := pos;
+END_GET
+SET
+pos := 1000 / Opening;
+END_SET
+END_PROPERTY
+END_FUNCTION_BLOCK
+PROGRAM Main
+VAR v : Valve; END_VAR
+END_PROGRAM
+"""
+
+
+def test_a_write_of_a_call_property_runs_its_set_and_a_fault_in_it_is_logged_where_it_faults(
+    client: TestClient, workspace: Workspace, registry: SimulationRegistry
+) -> None:
+    """1000 / 4 = 250 before scan 1; writing 0 faults in the SET (logged at its line), the value stays 250."""
+    project, _ = source_to_project(VALVE, "valve")
+    workspace.create(project)
+    sim_id = client.post("/api/projects/valve/simulations").json()["id"]
+    line = VALVE.splitlines().index("pos := 1000 / Opening;") + 1
+    with client.websocket_connect(f"/api/simulations/{sim_id}/ws") as ws:
+        recv(ws)
+        assert subscribe(ws, ["Main.v.Opening"])["changed"] == {"MAIN.V.OPENING": 0}
+        ws.send_json({"type": "write", "path": "Main.v.Opening", "value": 4})
+        ws.send_json({"type": "single_cycle"})
+        assert values_of(ws, 1) == {"MAIN.V.OPENING": 250}
+        ws.send_json({"type": "write", "path": "Main.v.Opening", "value": 0})
+        ws.send_json({"type": "single_cycle"})
+        log, _ = recv_until(ws, log_of("fault"))
+        assert log["message"].startswith(f"division by zero: 1000 / 0 at POU VALVE.OPENING.SET, line {line} column 1")
+        assert (log["at"]["pou"], log["at"]["line"]) == ("VALVE.OPENING.SET", line)
+        ws.send_json({"type": "single_cycle"})
+        values_of(ws, 3)  # the tasks went on
+        ws.send_json({"type": "force", "path": "Main.v.Opening", "value": 4})
+        error, _ = recv_until(ws, of_type("error"))
+        assert error["message"] == (
+            "MAIN.V.OPENING is a property monitored as 'call': a write runs its SET once, and no variable holds its "
+            "value to force"
+        )

@@ -62,8 +62,8 @@ _LAST_VALUE = (
     "a property monitored as 'variable' shows the value of its last GET or SET, and is read only (CODESYS); "
     "assign the property in the program or write the variables its SET writes"
 )
-#: Why a property monitored as 'call' is not written online.
-_CALLED = "a property monitored as 'call' is read by running its GET; it is not written online (a SET is code)"
+#: Why a property monitored as 'call' without SET is not written (with one, a write runs it: CODESYS).
+_CALLED = "a property monitored as 'call' is written by running its SET, and it has none"
 
 
 class UnknownPath(KeyError):
@@ -77,9 +77,9 @@ class NoTarget(ValueError):
     value written (a subrange left, a BOOL byte of 2)."""
 
 
-class GetterFault(NoTarget):
-    """The GET of a property monitored as 'call' faulted when run to show its value: ``fault`` is the located fault
-    (engine/codegen/faults.py); the value is none, the program's tasks go on."""
+class AccessorFault(NoTarget):
+    """The GET (SET) of a property monitored as 'call' faulted when run to show its value (to write it): ``fault`` is
+    the located fault (engine/codegen/faults.py); no value is shown (written on), the program's tasks go on."""
 
     def __init__(self, message: str, fault: object) -> None:
         super().__init__(message)
@@ -104,12 +104,15 @@ def _target(ref: object, step: _Pointee) -> tuple[object, object]:
 
 
 @dataclass(frozen=True)
-class Getter:
+class Accessors:
     """The last key of a property monitored as 'call' (``{attribute 'monitoring' := 'call'}``): its value is what
-    its GET ``function`` returns when run on the instance before it, between scans (``Roots.run_getter``)."""
+    its GET ``getter`` returns when run on the instance before it, and a write runs its SET ``setter`` (None: it
+    has none), between scans (``Roots.run_accessor``); ``*_dispatched``: by the instance's function block."""
 
-    function: str
-    dispatched: bool
+    getter: str
+    get_dispatched: bool
+    setter: str | None
+    set_dispatched: bool
 
 
 @dataclass(frozen=True)
@@ -171,7 +174,7 @@ class Location:
     @property
     def called(self) -> bool:
         """It is a property monitored as 'call': reading it runs code (its GET), between scans only."""
-        return isinstance(self.keys[-1], Getter)
+        return isinstance(self.keys[-1], Accessors)
 
     @property
     def through_pointer(self) -> bool:
@@ -182,9 +185,10 @@ class Location:
         return _pair(roots.get(self.write_root if writing and self.write_root is not None else self.root), self.keys)
 
     def get(self, roots: Roots) -> object:
-        getter = self.keys[-1]
-        if isinstance(getter, Getter):
-            return roots.run_getter(self.path, getter, _pair(roots.get(self.root), self.keys[:-1]))
+        call = self.keys[-1]
+        if isinstance(call, Accessors):
+            reference = _pair(roots.get(self.root), self.keys[:-1])
+            return roots.run_accessor(self.path, call.getter, call.get_dispatched, reference, ())
         container, key = self._container(roots)
         try:
             return container[key]  # type: ignore[index]
@@ -192,6 +196,11 @@ class Location:
             raise NoTarget(f"{self.path}: {error.message}") from None
 
     def set(self, roots: Roots, value: object) -> None:
+        call = self.keys[-1]
+        if isinstance(call, Accessors) and call.setter is not None:  # (coerce_for refuses one without a SET)
+            reference = _pair(roots.get(self.root), self.keys[:-1])
+            roots.run_accessor(self.path, call.setter, call.set_dispatched, reference, (value,))
+            return
         container, key = self._container(roots, writing=True)
         try:
             container[key] = value  # type: ignore[index]
@@ -238,12 +247,13 @@ class Roots:
         self,
         ns: dict[str, object],
         attached: dict[str, tuple[object, str]],
-        run_getter: Callable[[str, Getter, tuple[object, object]], object] | None = None,
+        run_accessor: Callable[[str, str, bool, tuple[object, object], tuple[object, ...]], object] | None = None,
     ) -> None:
         self.ns = ns
         self.attached = attached  # upper-case name -> (instance, upper-case POU name)
-        #: runs a 'call' property's GET on an instance reference (Simulation: between scans, a fault located)
-        self.run_getter = run_getter or _no_getter
+        #: runs a 'call' property's GET or SET (path, function, dispatched, instance reference, inputs): Simulation's
+        #: between scans, a fault located
+        self.run_accessor = run_accessor or _no_accessor
 
     def get(self, root: tuple[str, str]) -> object:
         kind, name = root
@@ -258,8 +268,8 @@ class Roots:
         return found
 
 
-def _no_getter(path: str, getter: Getter, reference: tuple[object, object]) -> object:
-    raise NoTarget(f"{path}: its GET runs only in a simulation, between scans")
+def _no_accessor(path: str, function: str, dispatched: bool, reference: object, inputs: tuple[object, ...]) -> object:
+    raise NoTarget(f"{path}: its GET and SET run only in a simulation, between scans")
 
 
 def tokens(text: str) -> list[tuple[str, str]]:
@@ -438,8 +448,9 @@ class Resolver:
             return Location(path, ty, root, keys, refusal=_LAST_VALUE)
         path = f"{path}.{prop.name.upper()}"  # (as the implicit variable of 'variable' is named)
         assert prop.getter is not None  # (st/monitoring.py: 'call' without a GET is ignored)
-        getter = Getter(prop.getter, prop.getter in self.context.program.dispatch)
-        return Location(path, prop.type, root, (*keys, getter), refusal=_CALLED)
+        dispatch = self.context.program.dispatch
+        call = Accessors(prop.getter, prop.getter in dispatch, prop.setter, prop.setter in dispatch)
+        return Location(path, prop.type, root, (*keys, call), refusal="" if prop.setter else _CALLED)
 
     def _steps_located(self, text: str, name: str, slot: ir.Slot, rest: list[tuple[str, str]]) -> Location:
         return self._located_part(located_location(name, slot.type, located_address(slot.address)), rest)
@@ -717,7 +728,7 @@ class LocationReader:
             try:
                 value = location.get(self.roots)
                 values[path] = plain(self.ctx, location.type, value)
-            except GetterFault as error:
+            except AccessorFault as error:
                 values[path], self.faults[path] = None, error.fault
             except Exception:
                 values[path] = None

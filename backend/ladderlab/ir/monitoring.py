@@ -61,9 +61,10 @@ def monitored_table(checked: CheckResult) -> dict[str, dict[str, MonitoredProper
                 continue
             prop, mode = found
             getter = prop.getter.name.upper() if prop.getter is not None else None
+            setter = prop.setter.name.upper() if prop.setter is not None else None
             try:
                 ty = TypeLowering(checked, info).type_of(prop.type)
             except LoweringError:
                 continue
-            table.setdefault(info.name.upper(), {})[name] = MonitoredProperty(prop.name, mode, ty, getter)
+            table.setdefault(info.name.upper(), {})[name] = MonitoredProperty(prop.name, mode, ty, getter, setter)
     return table

@@ -448,12 +448,13 @@ class Slot:
 class MonitoredProperty:
     """A property shown online (CODESYS {attribute 'monitoring'}): ``mode`` "variable" reads the implicit slot named
     like the property that its accessors store (``name``); "call" runs ``getter`` (its GET, dispatched by the
-    instance's FB when overridden) between scans."""
+    instance's FB when overridden) between scans, and ``setter`` (its SET) for a write."""
 
     name: str
     mode: str
     type: IrType
     getter: str | None = None
+    setter: str | None = None
 
 
 @dataclass(slots=True)

@@ -187,6 +187,7 @@ class SimRunner:
         #: the watched (traced) 'call' properties whose GET faulted at the last frame (sample)
         self._faulting_watched: set[str] = set()
         self._faulting_traced: set[str] = set()
+        self._seen_accessor_faults = 0
         self._ctx = sim.compiled.generated.context
         self._cv = threading.Condition()
         self._commands: deque[tuple[str, dict[str, Any], Reply]] = deque()
@@ -366,6 +367,10 @@ class SimRunner:
             if self.traces.sample(sim) and self.history is not None:
                 self.history.mark(sim.scan_count - 1, "trigger")  # the scan that completed last
             self._faulting_traced = self._log_getter_faults(self.traces.faults, self._faulting_traced)
+        if len(sim.accessor_faults) > self._seen_accessor_faults:  # an online write's SET: logged, the tasks go on
+            for fault in sim.accessor_faults[self._seen_accessor_faults :]:
+                self._fault_log(fault)
+            self._seen_accessor_faults = len(sim.accessor_faults)
         if len(sim.faults) > self._seen_faults:
             for fault in sim.faults[self._seen_faults :]:
                 self._fault_log(fault)
@@ -597,7 +602,7 @@ class SimRunner:
         self._set_running(False)
         self.sim.reset(cold=cold)
         self._faulted = False
-        self._seen_faults = 0
+        self._seen_faults = self._seen_accessor_faults = 0
         self._log("state", "info", "reset (cold: RETAIN variables too)" if cold else "reset (warm)")
 
     def single_cycle(self) -> None:

@@ -14,7 +14,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
-from ..engine.paths import GetterFault, Location
+from ..engine.paths import AccessorFault, Location
 from ..engine.simulation import Simulation
 from ..ir import types as t
 from ..model.monitor import MAX_TRACE_SAMPLES, TraceTrigger
@@ -89,7 +89,7 @@ def _value(sim: Simulation, location: Location, faults: dict[str, Any]) -> objec
     kept in ``faults`` for the log."""
     try:
         return sim.value(location)
-    except GetterFault as error:
+    except AccessorFault as error:
         faults[location.path] = error.fault
         return None
 
