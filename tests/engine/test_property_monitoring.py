@@ -393,3 +393,15 @@ def test_a_call_property_is_not_forced_nor_faulted():
         "MAIN.V.OPENING is a property monitored as 'call': a write runs its SET once, and no variable holds its value "
         "to force"
     )
+
+
+def test_a_write_of_a_call_property_is_refused_while_a_scan_is_halted():
+    project, diagnostics = source_to_project(VALVE, "monitoring")
+    assert project is not None and diagnostics == []
+    sim = Simulation(lower_project(project).program, variant="debug")
+    sim.set_breakpoint("Main", line=VALVE.splitlines().index("n := n + 1;") + 1)
+    sim.cycle(1)
+    assert sim.halted is not None
+    with pytest.raises(InputRefused) as refused:
+        sim.write("Main.v.Opening", 4)
+    assert str(refused.value) == "MAIN.V.OPENING: its SET runs only between scans; the scan is halted in the middle"

@@ -1111,7 +1111,7 @@ class Simulation:
                 f"{location.path} is a property monitored as 'call': a write runs its SET once, and no variable holds "
                 f"its value to {event.kind}"
             )
-        if self.halted is not None:
+        if event.kind in ("write", "panel") and self.halted is not None:
             raise InputRefused(f"{location.path}: its SET runs only between scans; the scan is halted in the middle")
 
     def _apply_inputs(self) -> None:
