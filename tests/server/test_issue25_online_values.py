@@ -1,7 +1,7 @@
 """Issue 25's values online over the real websocket: a bit or part of a variable (``MAIN.D.%X0``, ``MAIN.W.%B1``, an
 INT's ``MAIN.K.%X15``) is a path of its own - watched, written (the other bits kept), forced and traced, a trigger
-too; LTIME, an enumeration and ``p^`` are traced; a PROPERTY is refused with the reason (its GET is code that may
-change variables: a watch or trace never runs it). Expected values follow from the program text by hand: parts
+too; LTIME, an enumeration and ``p^`` are traced; a PROPERTY without {attribute 'monitoring'} is refused with the
+reason (its GET is code that may change variables: a watch or trace never runs it). Expected values follow from the program text by hand: parts
 numbered from the least significant bit (IEC 61131-3 ed. 3, 6.5.6), an LTIME in nanoseconds, an enumeration as
 its number."""
 
@@ -135,7 +135,9 @@ def test_a_part_triggers_a_trace_on_its_rising_edge(client: TestClient, sim_id: 
 def test_a_property_is_refused_with_the_reason(client: TestClient, sim_id: str) -> None:
     reason = (
         "MAIN.T.Level is a PROPERTY of TANK: its value is what its GET returns when the program calls it, and "
-        "watching or tracing never runs code that may change variables; watch or trace the variables its GET reads"
+        "watching or tracing never runs code that may change variables; watch or trace the variables its GET reads, "
+        "or mark the property {attribute 'monitoring' := 'variable'} (its last value) or 'call' (its GET run between "
+        "scans)"
     )
     with client.websocket_connect(f"/api/simulations/{sim_id}/ws") as ws:
         recv(ws)

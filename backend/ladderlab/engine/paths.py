@@ -16,7 +16,7 @@ indices raise ValueError. ``snapshot`` lists every elementary variable.
 from __future__ import annotations
 
 import re
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 from typing import Any
 
@@ -50,11 +50,20 @@ _ONE_CALL = (
     "(the call stack, and inline in its editor)"
 )
 
-#: Why no path reaches a PROPERTY: reading one runs its GET, code that may change variables (issue 25).
+#: Why no path reaches a PROPERTY without CODESYS's {attribute 'monitoring'}: reading one runs its GET, code that may
+#: change variables (issue 25).
 _ACCESSOR = (
     "its value is what its GET returns when the program calls it, and watching or tracing never runs code that may "
-    "change variables; watch or trace the variables its GET reads"
+    "change variables; watch or trace the variables its GET reads, or mark the property {attribute 'monitoring' := "
+    "'variable'} (its last value) or 'call' (its GET run between scans)"
 )
+#: Why a property monitored as 'variable' is not written: CODESYS allows only reading it.
+_LAST_VALUE = (
+    "a property monitored as 'variable' shows the value of its last GET or SET, and is read only (CODESYS); "
+    "assign the property in the program or write the variables its SET writes"
+)
+#: Why a property monitored as 'call' without SET is not written (with one, a write runs it: CODESYS).
+_CALLED = "a property monitored as 'call' is written by running its SET, and it has none"
 
 
 class UnknownPath(KeyError):
@@ -66,6 +75,15 @@ class NoTarget(ValueError):
     """A path through a pointer that is NULL (or points outside its array) now: it names no variable; or one through
     a pointer seeing other memory (engine/codegen/views.py) whose bytes hold no value of its type, or cannot hold the
     value written (a subrange left, a BOOL byte of 2)."""
+
+
+class AccessorFault(NoTarget):
+    """The GET (SET) of a property monitored as 'call' faulted when run to show its value (to write it): ``fault`` is
+    the located fault (engine/codegen/faults.py); no value is shown (written on), the program's tasks go on."""
+
+    def __init__(self, message: str, fault: object) -> None:
+        super().__init__(message)
+        self.fault = fault
 
 
 @dataclass(frozen=True)
@@ -83,6 +101,18 @@ def _target(ref: object, step: _Pointee) -> tuple[object, object]:
         return ref.pair  # type: ignore[attr-defined, no-any-return]  # a Ref (engine/codegen/runtime.py)
     except PlcRuntimeError as error:  # a moved pointer beyond its array
         raise NoTarget(f"{step.pointer}^: {error.message}") from None
+
+
+@dataclass(frozen=True)
+class Accessors:
+    """The last key of a property monitored as 'call' (``{attribute 'monitoring' := 'call'}``): its value is what
+    its GET ``getter`` returns when run on the instance before it, and a write runs its SET ``setter`` (None: it
+    has none), between scans (``Roots.run_accessor``); ``*_dispatched``: by the instance's function block."""
+
+    getter: str
+    get_dispatched: bool
+    setter: str | None
+    set_dispatched: bool
 
 
 @dataclass(frozen=True)
@@ -135,10 +165,16 @@ class Location:
     keys: tuple[object, ...]
     read_only: bool = False  # a READ_ONLY access path (VAR_ACCESS)
     write_root: tuple[str, str] | None = None  # where writes go when not to ``root`` (the world's side of I/Q)
+    refusal: str = ""  # why it is never written (a monitored property), else ""
 
     @property
     def elementary(self) -> bool:
         return not is_composite(self.type)
+
+    @property
+    def called(self) -> bool:
+        """It is a property monitored as 'call': reading it runs code (its GET), between scans only."""
+        return isinstance(self.keys[-1], Accessors)
 
     @property
     def through_pointer(self) -> bool:
@@ -149,6 +185,10 @@ class Location:
         return _pair(roots.get(self.write_root if writing and self.write_root is not None else self.root), self.keys)
 
     def get(self, roots: Roots) -> object:
+        call = self.keys[-1]
+        if isinstance(call, Accessors):
+            reference = _pair(roots.get(self.root), self.keys[:-1])
+            return roots.run_accessor(self.path, call.getter, call.get_dispatched, reference, ())
         container, key = self._container(roots)
         try:
             return container[key]  # type: ignore[index]
@@ -156,6 +196,11 @@ class Location:
             raise NoTarget(f"{self.path}: {error.message}") from None
 
     def set(self, roots: Roots, value: object) -> None:
+        call = self.keys[-1]
+        if isinstance(call, Accessors) and call.setter is not None:  # (coerce_for refuses one without a SET)
+            reference = _pair(roots.get(self.root), self.keys[:-1])
+            roots.run_accessor(self.path, call.setter, call.set_dispatched, reference, (value,))
+            return
         container, key = self._container(roots, writing=True)
         try:
             container[key] = value  # type: ignore[index]
@@ -198,9 +243,17 @@ class Roots:
     process image's views (made on first use: a path may read an address through a view no code uses) and the
     instances attached outside the tasks (``Simulation.attach``)."""
 
-    def __init__(self, ns: dict[str, object], attached: dict[str, tuple[object, str]]) -> None:
+    def __init__(
+        self,
+        ns: dict[str, object],
+        attached: dict[str, tuple[object, str]],
+        run_accessor: Callable[[str, str, bool, tuple[object, object], tuple[object, ...]], object] | None = None,
+    ) -> None:
         self.ns = ns
         self.attached = attached  # upper-case name -> (instance, upper-case POU name)
+        #: runs a 'call' property's GET or SET (path, function, dispatched, instance reference, inputs): Simulation's
+        #: between scans, a fault located
+        self.run_accessor = run_accessor or _no_accessor
 
     def get(self, root: tuple[str, str]) -> object:
         kind, name = root
@@ -213,6 +266,10 @@ class Roots:
             assert isinstance(image, ProcessImage)
             found = self.ns[name] = image.view(buffer, kind)
         return found
+
+
+def _no_accessor(path: str, function: str, dispatched: bool, reference: object, inputs: tuple[object, ...]) -> object:
+    raise NoTarget(f"{path}: its GET and SET run only in a simulation, between scans")
 
 
 def tokens(text: str) -> list[tuple[str, str]]:
@@ -358,6 +415,9 @@ class Resolver:
                 rest = rest[2:]
             elif (kind, value) == ("punct", "."):
                 member, rest = self._member_name(rest, text)
+                monitored = self._monitored(ty, member)
+                if monitored is not None:
+                    return self._property(path, ty, keys, root, monitored, rest)
                 path, ty, keys = self._member(path, ty, keys, member)
                 if isinstance(keys, Location):  # a located variable of an FB or program instance
                     return self._located_part(keys, rest)
@@ -371,6 +431,26 @@ class Resolver:
             else:
                 raise ValueError(f"{text!r} is not a variable path (unexpected {value!r})")
         return Location(path, ty, root, keys)
+
+    def _monitored(self, ty: t.IrType, member: str) -> ir.MonitoredProperty | None:
+        """The property ``member`` of an instance of type ``ty`` when {attribute 'monitoring'} shows it online."""
+        if not isinstance(ty, t.FbInstance):
+            return None
+        return self.context.program.monitored.get(ty.fb.upper(), {}).get(member.upper())
+
+    def _property(self, path, ty, keys, root, prop: ir.MonitoredProperty, rest) -> Location:
+        """A monitored property of the instance at ``keys``: its implicit variable ('variable'), or its GET run
+        when read ('call'); neither is written online, and its value is one value (no member, element or part)."""
+        if rest:
+            raise ValueError(f"{path}.{prop.name.upper()} is a property shown online: watch it whole, not a part of it")
+        if prop.mode == "variable":
+            path, ty, keys = self._member(path, ty, keys, prop.name)
+            return Location(path, ty, root, keys, refusal=_LAST_VALUE)
+        path = f"{path}.{prop.name.upper()}"  # (as the implicit variable of 'variable' is named)
+        assert prop.getter is not None  # (st/monitoring.py: 'call' without a GET is ignored)
+        dispatch = self.context.program.dispatch
+        call = Accessors(prop.getter, prop.getter in dispatch, prop.setter, prop.setter in dispatch)
+        return Location(path, prop.type, root, (*keys, call), refusal="" if prop.setter else _CALLED)
 
     def _steps_located(self, text: str, name: str, slot: ir.Slot, rest: list[tuple[str, str]]) -> Location:
         return self._located_part(located_location(name, slot.type, located_address(slot.address)), rest)
@@ -486,6 +566,8 @@ def coerce_for(location: Location, value: object) -> object:
     ty = location.type
     if location.read_only:
         raise ValueError(f"{location.path} is reached through a READ_ONLY access path: it cannot be written")
+    if location.refusal:
+        raise ValueError(f"{location.path} cannot be written: {location.refusal}")
     if not location.elementary:
         raise ValueError(f"{location.path} is {_a(ty)}: write its elements one by one")
     if isinstance(ty, t.Reference):
@@ -614,6 +696,8 @@ class LocationReader:
         self.roots, self.ctx = roots, ctx
         groups: dict[tuple, list[tuple[str, object, t.IrType | None]]] = {}  # members: (path, key, composite type)
         self.single: list[tuple[str, Location]] = []  # ends in a VAR_IN_OUT reference: read on its own
+        #: the paths of 'call' properties whose GET faulted at the last read -> the fault
+        self.faults: dict[str, object] = {}
         for path, location in locations.items():
             last = location.keys[-1]
             if isinstance(last, (str, int)):
@@ -639,10 +723,13 @@ class LocationReader:
             for path, key, composite in members:
                 value = container[key]  # type: ignore[index]
                 values[path] = value if composite is None else plain(self.ctx, composite, value)
+        self.faults = {}
         for path, location in self.single:
             try:
                 value = location.get(self.roots)
                 values[path] = plain(self.ctx, location.type, value)
+            except AccessorFault as error:
+                values[path], self.faults[path] = None, error.fault
             except Exception:
                 values[path] = None
         return values

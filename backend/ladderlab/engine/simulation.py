@@ -53,7 +53,18 @@ from .debug import STEP_ENDS, Debugger, Halt
 from .doubles import Mocks
 from .frames import FramePlan, frame_plan
 from .inputs import AppliedInput, Injection, InputEvent, InputRefused, immediate, injection
-from .paths import Location, LocationReader, NoTarget, Resolver, Roots, UnknownPath, coerce_for, leaves, plain
+from .paths import (
+    AccessorFault,
+    Location,
+    LocationReader,
+    NoTarget,
+    Resolver,
+    Roots,
+    UnknownPath,
+    coerce_for,
+    leaves,
+    plain,
+)
 from .process_image import AREA_ORDER, IoPoint, ProcessImage, key_of, located_address, view_kind
 from .state import SimState, data_of, holds_references, restore_into, restore_list
 from .stored_once import StoredOnce
@@ -64,6 +75,15 @@ from .tasks import DEFAULT_WATCHDOG_S, Schedule, Task, task_table
 SAMPLE_EVERY = 16
 #: The slot types that may hold a user FB instance, whose path ``_instance_paths`` records
 _HOLDERS = (t.FbInstance, t.Array, t.Struct)
+
+
+def drained(generator: GeneratorType) -> object:
+    """What a debug-variant call returns, run to its end (its pause points pass: it runs outside any scan)."""
+    while True:
+        try:
+            next(generator)
+        except StopIteration as stop:
+            return stop.value
 
 
 @dataclass
@@ -127,7 +147,9 @@ class Simulation:
         self._schedule = Schedule(self._tasks)
         self._resolver = Resolver(self._context)
         self._attached: dict[str, tuple[object, str]] = {}  # outside the tasks (attach): name -> (instance, POU)
-        self._roots = Roots(self._ns, self._attached)
+        self._roots = Roots(self._ns, self._attached, self._run_accessor)
+        #: faults of the SETs that online writes of 'call' properties ran (the runner logs them; the tasks go on)
+        self.accessor_faults: list[Fault] = []
         self._image: ProcessImage = self._ns["ll_image"]
         self._has_inputs, self._has_outputs = bool(self._image.inputs), bool(self._image.outputs)  # sized once
         self._triggers = {task.name: self._resolver.resolve(task.single) for task in self._tasks if task.single}
@@ -306,6 +328,7 @@ class Simulation:
             self.debugger.waiting_for_transition = False
             self.debugger.arm(None)
         self.faults.clear()
+        self.accessor_faults.clear()
         for task in self._tasks:
             task.stopped = False
         if implicit:
@@ -535,6 +558,42 @@ class Simulation:
                 places=self.compiled.program.places,
             )
         )
+
+    def _run_accessor(
+        self, path: str, function: str, dispatched: bool, reference: tuple[object, object], inputs: tuple[object, ...]
+    ) -> object:
+        """Run the GET (``inputs`` none) or SET (the value) ``function`` of a property monitored as 'call' on the
+        instance at ``reference`` now (``dispatched``: the one of the instance's function block): only between scans
+        (NoTarget in a halted one), under a task's watchdog; a fault in it is AccessorFault with the located fault
+        (the program's tasks go on)."""
+        kind = "GET" if not inputs else "SET"
+        if self.halted is not None or self._scan is not None:
+            raise NoTarget(f"{path}: the scan is halted in the middle, and a property's {kind} runs only between scans")
+        if dispatched:  # an override: the one of the instance's function block
+            instance = reference[0][reference[1]]  # type: ignore[index]  # an instance's container
+            code = self._ns[names.dispatch_table(function)][type(instance)]
+        else:
+            code = self._ns[names.function(function)]
+        now = self._ns["ll_now"]
+        self._watchdog.arm(min((task.watchdog_s for task in self._tasks), default=DEFAULT_WATCHDOG_S))
+        try:
+            result = code(*inputs, reference)
+            if isinstance(result, GeneratorType):  # the debug variant: run it through (no halt outside a scan)
+                result = drained(result)
+            return result
+        except Exception as error:
+            fault = make_fault(
+                error,
+                self.compiled.generated,
+                self.compiled.filename,
+                self._ns,
+                task="monitoring",
+                time_ms=now,
+                scan=self.scan_count,
+                instance_path=self._instance_path,
+                places=self.compiled.program.places,
+            )
+            raise AccessorFault(f"{path}: its {kind} faulted: {fault.text()}", fault) from None
 
     # ------------------------------------------------------------------ outside the task configuration (tests)
 
@@ -1022,6 +1081,8 @@ class Simulation:
     def _prepare(self, event: InputEvent, location: Location | None) -> tuple[InputEvent, object]:
         """What applying the event needs: the value for its variable, or the fault to hold there. A ``stuck``
         fault without a value gets the variable's value now, so the event alone says what it holds."""
+        if location is not None and location.called:
+            self._refuse_called(event, location)
         if event.kind in ("write", "force", "panel"):
             assert location is not None  # ``check`` made sure these kinds name a variable
             value = coerce_for(location, event.value)
@@ -1042,6 +1103,17 @@ class Simulation:
         except InputRefused as error:
             raise InputRefused(f"{location.path}: {error}") from None
 
+    def _refuse_called(self, event: InputEvent, location: Location) -> None:
+        """InputRefused unless ``event`` is a write of a property monitored as 'call' between scans (its SET runs
+        once; CODESYS: "read or written by calling the property"): nothing holds its value to force or fault."""
+        if event.kind in ("force", "fault"):
+            raise InputRefused(
+                f"{location.path} is a property monitored as 'call': a write runs its SET once, and no variable holds "
+                f"its value to {event.kind}"
+            )
+        if event.kind in ("write", "panel") and self.halted is not None:
+            raise InputRefused(f"{location.path}: its SET runs only between scans; the scan is halted in the middle")
+
     def _apply_inputs(self) -> None:
         """The inputs waiting for this scan, in order; a second panel event on a variable waits a scan more."""
         pending, self._pending = self._pending, []
@@ -1061,7 +1133,12 @@ class Simulation:
         kind = event.kind
         if kind in ("write", "panel", "force", "release", "release_all"):  # (a constant input's: stored_once.py)
             self._stored_once.touched(location)
-        if kind in ("write", "panel") and location is not None:
+        if kind in ("write", "panel") and location is not None and location.called:
+            try:
+                location.set(self._roots, prepared)
+            except AccessorFault as error:  # logged where the SET faulted (the runner); the tasks go on
+                self.accessor_faults.append(error.fault)  # type: ignore[arg-type]  # a Fault (paths.py keeps it untyped)
+        elif kind in ("write", "panel") and location is not None:
             _set(location, self._roots, prepared)
         elif kind == "force" and location is not None:
             self._forces[location.path] = (location, prepared)

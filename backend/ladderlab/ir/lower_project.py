@@ -38,6 +38,7 @@ from .lower_sfc import lower_sfc_body
 from .lower_st import lower_st_body
 from .lower_types import LoweringError
 from .method_outputs import declare_output_references
+from .monitoring import accessor_notes, monitored_slots, monitored_table
 from .nodes import Assign, Binary, Block, Origin, Pou, Program, Slot, Stmt, Unary, Var
 from .types import BOOL
 
@@ -97,6 +98,7 @@ def _lower_typed_project(project: Project, checked: CheckResult | None) -> Lower
     program.fb_inits = method_chains(checked, "FB_INIT")
     program.fb_exits = method_chains(checked, "FB_EXIT")
     program.after_inits = after_init_chains(checked)
+    program.monitored = monitored_table(checked)
     program.gvls = {key: {k: s.name.upper() for k, s in gvl.members.items()} for key, gvl in checked.gvls.items()}
     program.addresses = st_types.codesys_typing()
     program.base_bodies = frozenset(
@@ -179,6 +181,9 @@ def lower_pou(
             slot = _slot(symbol, ctx, f"{info.name}/declarations")
             if slot is not None:
                 ctx.add_slot(slot)
+    for slot in monitored_slots(info, ctx):
+        if not ctx.has_slot(slot.name):
+            ctx.add_slot(slot)
     ctx.before_return = declare_output_references(ctx)
     return_type = None
     if info.kind == "FUNCTION" and info.return_type is not None:
@@ -191,7 +196,9 @@ def lower_pou(
     elif info.method is not None:  # a method without a value: the engine's functions all return one, never read
         return_type = BOOL
         ctx.add_slot(Slot(ctx.name, "VAR_OUTPUT", BOOL, False, hidden=True))
-    preamble = edge_preamble(ctx)
+    noted, returned = accessor_notes(info, ctx)
+    ctx.before_return += returned
+    preamble = edge_preamble(ctx) + noted
     language, plant = (pou.language, pou.kind == "plant") if pou is not None else ("st", False)
     lower = LOWER_BODY.get(language)
     blocks: list[Block] = []

@@ -444,6 +444,19 @@ class Slot:
     init_args: tuple[tuple[tuple[str, Const], ...], ...] | None = None
 
 
+@dataclass(frozen=True, slots=True)
+class MonitoredProperty:
+    """A property shown online (CODESYS {attribute 'monitoring'}): ``mode`` "variable" reads the implicit slot named
+    like the property that its accessors store (``name``); "call" runs ``getter`` (its GET, dispatched by the
+    instance's FB when overridden) between scans, and ``setter`` (its SET) for a write."""
+
+    name: str
+    mode: str
+    type: IrType
+    getter: str | None = None
+    setter: str | None = None
+
+
 @dataclass(slots=True)
 class Pou:
     name: str
@@ -516,6 +529,8 @@ class Program:
     fb_exits: dict[str, list[str]] = field(default_factory=dict)
     #: FB -> the methods its instances call after FB_init and the declaration's values (call_after_init), base first
     after_inits: dict[str, list[str]] = field(default_factory=dict)
+    #: FB or PROGRAM -> its properties (upper case) shown online ({attribute 'monitoring'}, ir/monitoring.py)
+    monitored: dict[str, dict[str, MonitoredProperty]] = field(default_factory=dict)
     #: FB instances may be mocked (a unit test program, engine/doubles.py swaps an instance's class): the standard
     #: FB bodies pasted in place of their calls are guarded by the instance's class
     mockable: bool = False

@@ -17,6 +17,7 @@ from ..iec.spelling import did_you_mean
 from ..model import Project
 from ..model.api import SymbolTable, VariableChildren, VariableNode
 from ..st import types as t
+from ..st.monitoring import monitored_property, property_names
 from ..storage import NotFoundError
 from .context import WorkspaceDep
 from .errors import ApiError, responses
@@ -93,7 +94,7 @@ def _members(ty: t.Type, path: str, indices: tuple[int, ...]) -> tuple[list[Vari
     """The members of a variable of type ``ty`` at ``path`` (``indices``: of an array indexed partly so far)."""
     if isinstance(ty, t.FbType) and ty.pou is not None:
         symbols = [s for s in ty.pou.symbols.values() if s.var_class in _INSTANCE_CLASSES]
-        return [_variable(s, f"{path}.{s.name}") for s in symbols], 0
+        return [*(_variable(s, f"{path}.{s.name}") for s in symbols), *_monitored(ty.pou, path)], 0
     if isinstance(ty, t.FbType) and ty.std is not None:
         pins = [(p, "VAR_INPUT") for p in ty.std.inputs] + [(p, "VAR_OUTPUT") for p in ty.std.outputs]
         return [
@@ -115,6 +116,18 @@ def _members(ty: t.Type, path: str, indices: tuple[int, ...]) -> tuple[list[Vari
             for i in range(low, last + 1)
         ], high - last
     return [], 0
+
+
+def _monitored(pou: PouInfo, path: str) -> list[VariableNode]:
+    """The properties of an instance of ``pou`` shown online ({attribute 'monitoring'}, st/monitoring.py), after its
+    variables, as CODESYS's online view lists them: one value each (var_class PROPERTY)."""
+    found = [monitored_property(pou, name) for name in property_names(pou)]
+    return [
+        VariableNode(
+            name=prop.name, path=f"{path}.{prop.name}", type=str(prop.type), var_class="PROPERTY", expandable=False
+        )
+        for prop, _ in filter(None, found)
+    ]
 
 
 def _walk(result: CheckResult, path: str) -> tuple[t.Type, tuple[int, ...]]:

@@ -13,7 +13,7 @@ from __future__ import annotations
 import operator
 import re
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 from ..engine.paths import UnknownPath, coerce_for
@@ -21,6 +21,11 @@ from ..engine.simulation import Simulation
 
 _COMPARE = re.compile(r"^\s*(?P<path>[^<>=]+?)\s*(?P<op><>|<=|>=|=|<|>)\s*(?P<value>.+?)\s*$")
 _NOT = re.compile(r"^\s*NOT\s+(?P<path>.+?)\s*$", re.IGNORECASE)
+#: Why a property monitored as 'call' is no condition (docs/st.md, "Properties online").
+_CALLED = (
+    "a property monitored as 'call', read by running its GET: a condition is checked after every scan, and "
+    "would run it each time; use 'variable' or the variables its GET reads"
+)
 _OPERATORS: dict[str, Callable[[Any, Any], Any]] = {
     "=": operator.eq,
     "<>": operator.ne,
@@ -68,10 +73,12 @@ def parse_condition(text: str, sim: Simulation) -> Condition:
         raise BadCondition(f"{text.strip()!r}: {error}") from None
     if not location.elementary:
         raise BadCondition(f"{text.strip()!r}: {location.path} is not a single value to compare")
+    if location.called:
+        raise BadCondition(f"{text.strip()!r}: {location.path} is {_CALLED}")
     if (negated or not compared) and getattr(location.type, "name", None) != "BOOL":
         raise BadCondition(f"{text.strip()!r}: {location.path} is not a BOOL; compare it, e.g. {location.path} > 0")
     try:
-        value = coerce_for(location, literal)
+        value = coerce_for(replace(location, refusal=""), literal)  # (a value to compare, never written)
     except ValueError as error:
         raise BadCondition(f"{text.strip()!r}: {error}") from None
     if op not in ("=", "<>") and isinstance(value, bool):

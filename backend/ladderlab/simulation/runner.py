@@ -184,6 +184,10 @@ class SimRunner:
         self.publish_s = publish_s
         self.clock = clock
         self.traces = TraceBook()
+        #: the watched (traced) 'call' properties whose GET faulted at the last frame (sample)
+        self._faulting_watched: set[str] = set()
+        self._faulting_traced: set[str] = set()
+        self._seen_accessor_faults = 0
         self._ctx = sim.compiled.generated.context
         self._cv = threading.Condition()
         self._commands: deque[tuple[str, dict[str, Any], Reply]] = deque()
@@ -362,6 +366,11 @@ class SimRunner:
             self._seen_scans = sim.scan_count
             if self.traces.sample(sim) and self.history is not None:
                 self.history.mark(sim.scan_count - 1, "trigger")  # the scan that completed last
+            self._faulting_traced = self._log_getter_faults(self.traces.faults, self._faulting_traced)
+        if len(sim.accessor_faults) > self._seen_accessor_faults:  # an online write's SET: logged, the tasks go on
+            for fault in sim.accessor_faults[self._seen_accessor_faults :]:
+                self._fault_log(fault)
+            self._seen_accessor_faults = len(sim.accessor_faults)
         if len(sim.faults) > self._seen_faults:
             for fault in sim.faults[self._seen_faults :]:
                 self._fault_log(fault)
@@ -448,12 +457,25 @@ class SimRunner:
         )
         self.sink.log(entry.model_dump())
 
+    def _log_getter_faults(self, faults: dict[str, Any], logged: set[str]) -> set[str]:
+        """Log each watched or traced 'call' property whose GET faults when run to show it (``faults``: path -> its
+        Fault), once until it reads again (``logged``: those faulting before); its value is none meanwhile, never a
+        wrong one. The paths faulting now."""
+        for path, fault in faults.items():
+            if path not in logged:
+                where = at_origin(fault.origin, fault.pou, fault.instance)
+                at = where.model_dump() if where is not None else None
+                self._log("fault", "error", f"{path}: its GET faulted: {fault.text()}", at, fault.scan)
+        return set(faults)
+
     # ------------------------------------------------------------------ frames
 
     def _publish(self, now: float) -> None:
         self._last_publish = now
         full, sim = self._full, self.shown
-        values = (self._reader if self._view is None else self._view_reader).read()
+        reader = self._reader if self._view is None else self._view_reader
+        values = reader.read()
+        self._faulting_watched = self._log_getter_faults(reader.faults, self._faulting_watched)
         if full:
             changed = values
             self._sent_values = dict(values)
@@ -580,7 +602,7 @@ class SimRunner:
         self._set_running(False)
         self.sim.reset(cold=cold)
         self._faulted = False
-        self._seen_faults = 0
+        self._seen_faults = self._seen_accessor_faults = 0
         self._log("state", "info", "reset (cold: RETAIN variables too)" if cold else "reset (warm)")
 
     def single_cycle(self) -> None:
@@ -922,7 +944,14 @@ class SimRunner:
             raise CommandError("bad_value", f"direction is -1 (back) or 1 (forward), not {direction}")
         self._in_history(scan)
         if path is not None:
-            found = history.changed(self._location(path).path, scan - 1, direction)
+            location = self._location(path)
+            if location.called:
+                raise CommandError(
+                    "bad_path",
+                    f"{location.path} is a property monitored as 'call': finding its changes would run its GET on "
+                    "every recorded scan; use 'variable' (its last value is recorded) or the variables its GET reads",
+                )
+            found = history.changed(location.path, scan - 1, direction)
         else:
             try:
                 until = parse_condition(condition or "", self.sim)

@@ -14,7 +14,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
-from ..engine.paths import Location
+from ..engine.paths import AccessorFault, Location
 from ..engine.simulation import Simulation
 from ..ir import types as t
 from ..model.monitor import MAX_TRACE_SAMPLES, TraceTrigger
@@ -84,6 +84,16 @@ def plan_trace(resolve: Callable[[str], Location], paths: list[str], trigger: Tr
     return TracePlan(tuple(locations.values()), where, trigger.condition, trigger.level)
 
 
+def _value(sim: Simulation, location: Location, faults: dict[str, Any]) -> object:
+    """The value at ``location`` now; None (no sample) when it is a 'call' property whose GET faults, the fault
+    kept in ``faults`` for the log."""
+    try:
+        return sim.value(location)
+    except AccessorFault as error:
+        faults[location.path] = error.fault
+        return None
+
+
 @dataclass
 class _Recorder:
     id: int
@@ -100,12 +110,12 @@ class _Recorder:
     unreported: bool = True  # a state change (or the start) the client has not been told about
     types: dict[str, Any] = field(default_factory=dict)  # each path's DisplayType fields, until the first chunk
 
-    def sample(self, sim: Simulation) -> None:
+    def sample(self, sim: Simulation, faults: dict[str, Any]) -> None:
         plan = self.plan
         if self.state == "waiting":
-            current = sim.value(plan.trigger)  # type: ignore[arg-type]  # waiting: a trigger was set
+            current = _value(sim, plan.trigger, faults)  # type: ignore[arg-type]  # waiting: a trigger was set
             previous, self.previous = self.previous, current
-            if not fired(plan.condition, plan.level, previous, current):
+            if previous is None or current is None or not fired(plan.condition, plan.level, previous, current):
                 return
             self.state, self.unreported = "recording", True
             self.triggered = {"scan": sim.scan_count, "time_ms": sim.time_ms}
@@ -117,7 +127,7 @@ class _Recorder:
         self.scans.append(sim.scan_count)
         self.times.append(sim.time_ms)
         for column, location in zip(self.columns, plan.locations):
-            column.append(sim.value(location))
+            column.append(_value(sim, location, faults))
         self.recorded += 1
         if self.samples is not None and self.recorded >= self.samples:
             self.state, self.unreported = "done", True
@@ -148,6 +158,7 @@ class TraceBook:
 
     def __init__(self) -> None:
         self._traces: dict[object, _Recorder] = {}
+        self.faults: dict[str, Any] = {}  # the last sample's faulting 'call' properties (``sample``)
 
     def start(
         self,
@@ -160,7 +171,7 @@ class TraceBook:
     ) -> None:
         """Start (or replace) ``owner``'s trace (reads the trigger's value now); ``types``: each path's DisplayType
         fields, which its first chunk carries."""
-        previous = sim.value(plan.trigger) if plan.trigger is not None else None
+        previous = _value(sim, plan.trigger, {}) if plan.trigger is not None else None
         self._traces[owner] = _Recorder(
             trace_id,
             plan,
@@ -180,12 +191,14 @@ class TraceBook:
         return True
 
     def sample(self, sim: Simulation) -> bool:
-        """After every scan: one sample per recording trace. Whether a trace's trigger fired at this scan."""
+        """After every scan: one sample per recording trace. Whether a trace's trigger fired at this scan.
+        ``faults``: the traced 'call' properties whose GET faulted at this sample (none recorded for them)."""
         fired = False
+        self.faults = {}
         for recorder in self._traces.values():
             if recorder.state != "done":
                 waiting = recorder.state == "waiting"
-                recorder.sample(sim)
+                recorder.sample(sim, self.faults)
                 fired |= waiting and recorder.state != "waiting"
         return fired
 

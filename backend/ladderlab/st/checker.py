@@ -39,6 +39,7 @@ from .inheritance import abstract_instance, check_overrides, link_bases
 from .interfaces import check_implementations, declare_interfaces, link_implements, register_interfaces
 from .libraries import with_libraries
 from .methods import check_method_body, check_method_recursion, declare_methods
+from .monitoring import check_monitoring
 from .parser import (
     keywords,
     parse_declarations,
@@ -159,6 +160,7 @@ class ProjectChecker:
             if (pou.methods or pou.properties or pou.actions) and info is not None and info.name == pou.name:
                 methods += declare_methods(self, info, pou.methods, pou.properties, pou.actions)
         check_call_after_init(self.result, self.project)
+        check_monitoring(self.result, self.project)
         blocks = [info for info in self.result.pous.values() if info.kind == "FUNCTION_BLOCK"]
         check_overrides(self, blocks)
         check_implementations(self, blocks)

@@ -28,7 +28,7 @@ from .errors import describe_unexpected, last_token, literal_problem, would_acce
 from .fast_lalr import NotFast, fast_parse
 from .lark_cache import cached_lark
 from .nesting import too_deep
-from .pragmas import attach_pack_modes, misplaced_call_after_init, misplaced_pack_modes
+from .pragmas import attach_pack_modes, misplaced_call_after_init, misplaced_monitoring, misplaced_pack_modes
 from .quick_decls import DEPTH as QUICK_DEPTH
 from .quick_decls import quick_declarations
 from .transformer import AstBuilder, StSyntaxError
@@ -255,13 +255,14 @@ def _finish(
     place: str = "",
 ) -> ParseResult:
     """``depth``: how deeply the AST is known to nest (expression levels; no statements), when it is; ``place``:
-    what the text is for the call_after_init attribute (st/pragmas.py)."""
+    what the text is for the call_after_init and monitoring attributes (st/pragmas.py)."""
     interfaces = (
         [(i.span.line, i.span.end_line) for i in result.ast.items if isinstance(i, ast.InterfaceDecl)]
         if place == "source" and isinstance(result.ast, ast.Source)
         else []
     )
     result.diagnostics += misplaced_call_after_init(original, file, pou, place, interfaces)
+    result.diagnostics += misplaced_monitoring(original, file, pou, place, interfaces)
     if result.ast is not None and (
         depth > limits.EXPRESSION_DEPTH.value if depth is not None else _may_nest_too_deep(result, original)
     ):

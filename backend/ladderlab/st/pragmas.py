@@ -1,5 +1,6 @@
 """CODESYS's ``{attribute 'pack_mode' := 'N'}`` and ``{attribute 'call_after_init'}``, the pragmas that change what a
-program computes here (the second: where it stands, ``misplaced_call_after_init``; what it does, st/call_after_init.py).
+program computes here (the second: where it stands, ``misplaced_call_after_init``; what it does, st/call_after_init.py),
+and ``{attribute 'monitoring' := '...'}``, which shows a property online (where it stands here, st/monitoring.py).
 
 The lexer skips every pragma (``%ignore PRAGMA``); this pass finds the pack_mode ones in the text and gives each
 to the TYPE declaration it stands above (``TypeDecl.pack_mode``), as CODESYS places it: "Insert location: above
@@ -25,6 +26,8 @@ CALL_AFTER_INIT = "{attribute 'call_after_init'}"
 _CALL_AFTER_INIT = re.compile(r"\{\s*attribute\s+'call_after_init'\s*\}", re.IGNORECASE)
 _HEADER = re.compile(r"(?:FUNCTION_BLOCK|METHOD)\b", re.IGNORECASE)
 _PACK_MODE = re.compile(r"\{\s*attribute\s+'pack_mode'\s*:=\s*'([^']*)'\s*\}", re.IGNORECASE)
+_MONITORING = re.compile(r"\{\s*attribute\s+'monitoring'\s*:=\s*'([^']*)'\s*\}", re.IGNORECASE)
+_PROPERTY = re.compile(r"PROPERTY\b", re.IGNORECASE)
 # What the lexer skips too: strings are jumped over, a pragma is captured (group 1)
 _LEXED = re.compile(r"'(?:[^'$\n]|\$.)*'|\"(?:[^\"$\n]|\$.)*\"|\(\*[\s\S]*?\*\)|/\*[\s\S]*?\*/|//[^\n]*|(\{[^}]*\})")
 _BETWEEN = re.compile(r"(?:\s+|\(\*[\s\S]*?\*\)|/\*[\s\S]*?\*/|//[^\n]*|\{[^}]*\})*")
@@ -123,6 +126,45 @@ def misplaced_call_after_init(
     return found
 
 
+def misplaced_monitoring(
+    text: str, file: str | None, pou: str | None, place: str = "", interfaces: Sequence[tuple[int, int]] = ()
+) -> list[Diagnostic]:
+    """The warning ST-PRAGMA at each ``{attribute 'monitoring' := ...}`` of ``text`` that shows no property online:
+    in place only at the head of a declarations text (``place`` "declarations": a property accessor's, the checker
+    sees, st/monitoring.py) and above a PROPERTY header of a whole file (``place`` "source") but for a PROPERTY
+    prototype of an INTERFACE (``interfaces``: their first and last lines), which has no value."""
+    if "monitoring" not in text.lower():
+        return []
+    starts = _line_starts(text)
+    found = []
+    for pragma in _pragmas(text, _MONITORING):
+        if place == "declarations" and _skip(text, 0) >= pragma.end():
+            continue
+        if place == "source" and _PROPERTY.match(text, _skip(text, pragma.end())):
+            line = _position(starts, pragma.start())[0]
+            if not any(first <= line <= last for first, last in interfaces):
+                continue
+            found.append(_at(pragma, starts, monitoring_misplaced(file, pou, "on a property of an INTERFACE")))
+            continue
+        found.append(_at(pragma, starts, monitoring_misplaced(file, pou)))
+    return found
+
+
+def monitoring_misplaced(file: str | None, pou: str | None, why: str = "") -> Diagnostic:
+    """ST-PRAGMA (a warning): a monitoring attribute that shows nothing (``why``: where it stands, else "here")."""
+    return Diagnostic(
+        severity="warning",
+        code="ST-PRAGMA",
+        message=(
+            f"the attribute 'monitoring' has no effect {why or 'here'}: it shows a property's value online when it "
+            "heads the declarations of the property's GET (or SET), written above PROPERTY in IEC text; move it "
+            "there or remove it"
+        ),
+        file=file,
+        pou=pou,
+    )
+
+
 def head_call_after_init(text: str) -> tuple[int, int, int, int] | None:
     """Where ``{attribute 'call_after_init'}`` stands at the head of a declarations text (before its first block:
     the attribute of the POU or method the text declares), as (line, column, end line, end column); None if not."""
@@ -139,12 +181,7 @@ def without_call_after_init(text: str) -> tuple[str, str]:
     """A declarations text split for IEC text, where the attribute stands above the header (CODESYS): the attribute
     heading it (``CALL_AFTER_INIT`` or "") and the text without it."""
     place = head_call_after_init(text)
-    if place is None:
-        return "", text
-    starts = _line_starts(text)
-    start, end = starts[place[0] - 1] + place[1] - 1, starts[place[2] - 1] + place[3] - 1
-    before, after = text[:start], text[end:]
-    return CALL_AFTER_INIT, before + after if before.strip() else after.lstrip("\n")
+    return ("", text) if place is None else (CALL_AFTER_INIT, _cut(text, place))
 
 
 def attributed_headers(text: str) -> set[tuple[int, int]]:
@@ -164,9 +201,62 @@ def attributed_headers(text: str) -> set[tuple[int, int]]:
 def with_call_after_init(text: str) -> str:
     """A declarations text headed by the attribute (read from above a header in IEC text), its lines kept: the
     attribute takes the first of the blank lines that pad it (st/project_text.py), or a line of its own."""
+    return headed_by(CALL_AFTER_INIT, text)
+
+
+def monitoring_pragma(mode: str) -> str:
+    """CODESYS's ``{attribute 'monitoring' := 'mode'}`` as LadderLab writes it (st/monitoring.py)."""
+    return f"{{attribute 'monitoring' := '{mode}'}}"
+
+
+def head_monitoring(text: str) -> tuple[str, tuple[int, int, int, int]] | None:
+    """The mode (as written) of ``{attribute 'monitoring' := '...'}`` at the head of a property accessor's
+    declarations text (the property's attribute, st/monitoring.py) and where it stands; None if none heads it."""
+    if "monitoring" not in text.lower():
+        return None
+    starts = _line_starts(text)
+    for pragma in _pragmas(text[: _skip(text, 0)], _MONITORING):
+        return pragma.group(1), (*_position(starts, pragma.start()), *_position(starts, pragma.end()))
+    return None
+
+
+def without_monitoring(text: str) -> tuple[str, str]:
+    """An accessor's declarations text split for IEC text, where the attribute stands above ``PROPERTY``
+    (CODESYS): the attribute heading it (or "") and the text without it."""
+    found = head_monitoring(text)
+    if found is None:
+        return "", text
+    return monitoring_pragma(found[0]), _cut(text, found[1])
+
+
+def monitored_properties(text: str) -> dict[tuple[int, int], str]:
+    """The (line, column) of each PROPERTY header of a whole file that a monitoring attribute stands above
+    (comments and other pragmas may stand between), with the attribute's mode."""
+    if "monitoring" not in text.lower():
+        return {}
+    starts = _line_starts(text)
+    found = {}
+    for pragma in _pragmas(text, _MONITORING):
+        header = _skip(text, pragma.end())
+        if _PROPERTY.match(text, header):
+            found[_position(starts, header)] = pragma.group(1)
+    return found
+
+
+def headed_by(pragma: str, text: str) -> str:
+    """A declarations text headed by ``pragma`` (read from above a header in IEC text), its lines kept: the pragma
+    takes the first of the blank lines that pad it (st/project_text.py), or a line of its own."""
     if text.startswith("\n"):
-        return CALL_AFTER_INIT + text
-    return f"{CALL_AFTER_INIT}\n{text}" if text else CALL_AFTER_INIT
+        return pragma + text
+    return f"{pragma}\n{text}" if text else pragma
+
+
+def _cut(text: str, place: tuple[int, int, int, int]) -> str:
+    """``text`` without the pragma at ``place`` (and the line break after it when it stood alone at the head)."""
+    starts = _line_starts(text)
+    start, end = starts[place[0] - 1] + place[1] - 1, starts[place[2] - 1] + place[3] - 1
+    before, after = text[:start], text[end:]
+    return before + after if before.strip() else after.lstrip("\n")
 
 
 def misplaced_diagnostic(file: str | None, pou: str | None, why: str = "") -> Diagnostic:

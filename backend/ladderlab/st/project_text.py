@@ -28,7 +28,14 @@ from . import ast
 from .gvl_text import gvl_heading
 from .il_parser import blank_il_bodies
 from .parser import parse_source
-from .pragmas import attributed_headers, block_text, with_call_after_init
+from .pragmas import (
+    attributed_headers,
+    block_text,
+    headed_by,
+    monitored_properties,
+    monitoring_pragma,
+    with_call_after_init,
+)
 from .printer import print_expression
 from .sfc_text import sfc_from_text
 
@@ -46,6 +53,8 @@ class _Text:
                 self.starts.append(index + 1)
         #: the FUNCTION_BLOCK and METHOD headers {attribute 'call_after_init'} stands above (st/pragmas.py)
         self.attributed = attributed_headers(text)
+        #: the PROPERTY headers {attribute 'monitoring'} stands above, with its mode (st/monitoring.py)
+        self.monitored = monitored_properties(text)
 
     def declarations(self, node, text: str) -> str:
         """The declarations text of ``node`` (a POU or a method), headed by the call_after_init attribute when it
@@ -233,6 +242,12 @@ def _property(prop: ast.PropertyDecl, source: _Text) -> Property:
         accessors[accessor.kind.lower()] = Accessor(
             declarations=_keep_lines(*declarations) if declarations[0] else "", body=_keep_lines(*body)
         )
+    mode = source.monitored.get((prop.span.line, prop.span.column))
+    first = next(iter(accessors), None)
+    if mode is not None and first is not None:  # the model keeps it heading the GET's (else SET's) declarations
+        head = accessors[first]
+        headed = headed_by(monitoring_pragma(mode), head.declarations)
+        accessors[first] = head.model_copy(update={"declarations": headed})
     access = [m for m in prop.modifiers if m in ("PUBLIC", "PRIVATE", "PROTECTED", "INTERNAL")]
     return Property(
         name=prop.name, type=_type_text(prop.type, source) or "", access=access[-1] if access else "PUBLIC", **accessors

@@ -77,6 +77,8 @@ class PouInfo:
     runs_base_body: bool = False  # a function block whose body or a method calls SUPER^(): runs its base's body
     #: CODESYS's {attribute 'call_after_init'} on a function block or on its method (st/call_after_init.py)
     after_init: bool = False
+    #: a PROPERTY accessor's: its property's {attribute 'monitoring'} mode, "variable" or "call" (st/monitoring.py)
+    monitoring: str | None = None
     #: the FB bodies its code runs (``SUPER^()``: the base's; ``THIS^()`` in a method: dispatched, the instance's own
     #: class's) with the call, for POU-02 (methods.check_method_recursion)
     bodies_called: list[tuple[PouInfo, bool, Any]] = field(default_factory=list)

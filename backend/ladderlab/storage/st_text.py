@@ -14,7 +14,7 @@ from dataclasses import dataclass
 from ..model import Pou
 from ..model.project import Language, Method, PouAction, PouKind, Property
 from ..st.il_words import looks_like_il
-from ..st.pragmas import attributed_headers, with_call_after_init, without_call_after_init
+from ..st.pragmas import attributed_headers, with_call_after_init, without_call_after_init, without_monitoring
 
 _TOKEN = re.compile(
     r"""
@@ -229,11 +229,14 @@ def _action_text(action: PouAction) -> str:
 
 
 def _property_text(prop: Property) -> str:
-    parts = [f"PROPERTY {prop.access} {prop.name} : {prop.type}"]
+    attribute, parts = "", [f"PROPERTY {prop.access} {prop.name} : {prop.type}"]
     for kind, accessor in (("GET", prop.get), ("SET", prop.set)):
         if accessor is not None:
-            parts += [kind, *_texts(accessor.declarations, accessor.body), f"END_{kind}"]
-    return "\n".join([*parts, "END_PROPERTY"])
+            declarations = accessor.declarations
+            if not attribute:  # the monitoring attribute heading its accessor: above PROPERTY, as CODESYS writes it
+                attribute, declarations = without_monitoring(declarations)
+            parts += [kind, *_texts(declarations, accessor.body), f"END_{kind}"]
+    return "\n".join([*([attribute] if attribute else []), *parts, "END_PROPERTY"])
 
 
 def _texts(*texts: str) -> list[str]:

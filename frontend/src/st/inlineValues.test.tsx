@@ -52,6 +52,41 @@ END_IF;`;
 const at = (o: Occurrence) => `${o.text}@${o.from}-${o.to} ${o.path} ${o.type}`;
 
 describe("variable occurrences (issue 9: ST online values inline)", () => {
+  it("shows an instance's property with {attribute 'monitoring'}, not one without (issue 25)", () => {
+    const tank: LibraryEntry = { ...TON, name: "Tank", source: "user", inputs: [], outputs: [] };
+    const level = { name: "Level", type: "INT", kind: "PROPERTY", monitored: true };
+    const hidden = { name: "Hidden", type: "INT", kind: "PROPERTY" };
+    const withTank: Scope = {
+      ...scope,
+      symbols: [symbol("t", "Tank"), symbol("x", "INT")],
+      library: [tank],
+      extras: new Map([["TANK", [level, hidden]]]),
+    };
+    expect(variableOccurrences("x := t.Level + t.Hidden;", withTank, "MAIN").map(at)).toEqual([
+      "x@0-1 MAIN.X INT",
+      "t.Level@5-12 MAIN.T.LEVEL INT",
+    ]);
+  });
+
+  it("shows a monitored property named bare or through THIS^ in its function block's own code (issue 25)", () => {
+    const self = {
+      name: "THIS^",
+      kind: "THIS^",
+      methodsOf: null,
+      members: [
+        { name: "amount", type: "INT", kind: "VAR" },
+        { name: "Level", type: "INT", kind: "PROPERTY", monitored: true },
+        { name: "Hidden", type: "INT", kind: "PROPERTY" },
+      ],
+    };
+    const own: Scope = { ...scope, symbols: [symbol("amount", "INT")], qualifiers: new Map([["THIS^", self]]) };
+    expect(variableOccurrences("amount := Level + THIS^.Level + Hidden;", own, "MAIN.T").map(at)).toEqual([
+      "amount@0-6 MAIN.T.AMOUNT INT",
+      "Level@10-15 MAIN.T.LEVEL INT",
+      "THIS^.Level@18-29 MAIN.T.LEVEL INT",
+    ]);
+  });
+
   it("shows a variable named like an SFC word (OSCAT's step) outside an SFC body", () => {
     const named: Scope = { ...scope, symbols: [symbol("step", "INT"), symbol("Action", "BOOL")] };
     const text = "Step := step + 1;\nIF Action THEN step := 0; END_IF;";

@@ -14,6 +14,8 @@ export interface Member {
   /** VAR_INPUT, VAR_OUTPUT, VAR_IN_OUT for FB pins (or a program's, an instance's own VAR...); "field" for a struct
    * field; "value" for an enumeration's value (its type the enumeration). */
   kind: string;
+  /** A PROPERTY with CODESYS's {attribute 'monitoring'}: it has a value online (monitoring.ts). */
+  monitored?: boolean;
 }
 
 /** A name other than a variable that qualifies members (`Prog.x`, `Color.Red`, `THIS^.x`): what follows it. */
@@ -111,14 +113,19 @@ export function membersOf(type: string, scope: Scope): readonly Member[] | null 
   return scope.structs.get(name) ?? null;
 }
 
-/** The type of `a.b.c` (names matched case-insensitively), or null when a part is unknown. `GVL_IO.x` is the
+/** The type of `a.b.c` (names matched case-insensitively; a member may be an instance's monitored PROPERTY, which has
+ * a value online, and so may a bare name in the code of its own function block), or null when a part is unknown. `GVL_IO.x` is the
  * variable `x` of the global variable list GVL_IO (a global whose `gvl` it is, called `GVL_IO.x` when several lists
  * declare `x`) unless something else has the list's name. */
 export function typeOfChain(chain: readonly string[], scope: Scope): string | null {
   const [head, ...tail] = chain;
   if (!head) return null;
   let rest = tail;
-  let type = scope.symbols.find((s) => s.name.toUpperCase() === head.toUpperCase())?.type ?? null;
+  const own = (m: Member) => m.monitored && m.name.toUpperCase() === head.toUpperCase(); // a bare property, THIS^'s
+  let type =
+    scope.symbols.find((s) => s.name.toUpperCase() === head.toUpperCase())?.type ??
+    scope.qualifiers?.get("THIS^")?.members.find(own)?.type ??
+    null;
   const member = rest[0]?.toUpperCase();
   if (type === null && member !== undefined) {
     const list = head.toUpperCase();
@@ -128,7 +135,11 @@ export function typeOfChain(chain: readonly string[], scope: Scope): string | nu
   }
   for (const part of rest) {
     if (type === null) return null;
-    type = membersOf(type, scope)?.find((m) => m.name.toUpperCase() === part.toUpperCase())?.type ?? null;
+    const named = (m: Member) => m.name.toUpperCase() === part.toUpperCase();
+    const monitored = scope.extras
+      ?.get(type.replace(/\(.*$/s, "").trim().toUpperCase())
+      ?.find((m) => m.monitored && named(m));
+    type = membersOf(type, scope)?.find(named)?.type ?? monitored?.type ?? null;
   }
   return type;
 }

@@ -7,6 +7,7 @@
 import type { GlobalVariableList, LibraryEntry, Pou } from "../generated/api";
 import { interfaceTypes } from "./interfaces";
 import { codeTokens, structTypes, type Member, type Qualifier, type Qualifiers, type Scope } from "./members";
+import { monitoringMode } from "./monitoring";
 import { callable, chartSymbols, declaredSymbols, lineage, withInherited } from "./scope";
 
 /** Upper-case enumeration type name -> its values in declaration order (each of the enumeration's type): CODESYS's
@@ -63,8 +64,14 @@ function usable<T extends { name: string; access?: string }>(
   return found;
 }
 
+/** The PROPERTYs code `from` where may use, as members; those with {attribute 'monitoring'} are `monitored`. */
 const propertiesOf = (pou: Pou, pous: readonly Pou[], from: UsedFrom): Member[] =>
-  usable(pou, pous, from, (owner) => owner.properties).map((p) => ({ name: p.name, type: p.type, kind: "PROPERTY" }));
+  usable(pou, pous, from, (owner) => owner.properties).map((p) => ({
+    name: p.name,
+    type: p.type,
+    kind: "PROPERTY",
+    ...(monitoringMode(p) ? { monitored: true } : {}),
+  }));
 
 /** The METHODs code `from` where calls on an instance of `pou` (from the working copy, as ST completion offers
  * them). */

@@ -92,7 +92,12 @@ BACHMANN = "www.bachmann.at/plc/plcopenxml"
 POU_DATA = "http://www.3s-software.com/plcopenxml/pou"
 DATATYPE_DATA = "http://www.3s-software.com/plcopenxml/datatype"
 #: The CODESYS attribute LadderLab reads from an element's attributes entry, by the element's tag
-_READ_ATTRIBUTE = {"dataType": "pack_mode", "globalVars": QUALIFIED_ONLY, "interface": "call_after_init"}
+#: the CODESYS attributes read where they stand (a method's or POU's call_after_init, a property's monitoring)
+_READ_ATTRIBUTE = {
+    "dataType": {"pack_mode"},
+    "globalVars": {QUALIFIED_ONLY},
+    "interface": {"call_after_init", "monitoring"},
+}
 _UNDERSTOOD = {
     (INPUTASSIGNMENTS_DATA, "InputAssignments"),  # an instance's FB_init arguments, read with it (instance_args.py)
     (CFC_DATA, "CFC"),  # a POU's chart (codesys_cfc.py); a method's, action's or transition's is reported
@@ -275,11 +280,11 @@ class _Importer:
             if not kinds or not kinds <= _UNDERSTOOD:
                 self.foreign[data.get("name", "")] += 1
 
-    def only_attribute(self, data: ET.Element, name: str | None) -> bool:
-        """Whether a CODESYS attributes entry holds the attribute ``name`` alone."""
+    def only_attribute(self, data: ET.Element, read: set[str] | None) -> bool:
+        """Whether a CODESYS attributes entry holds only attributes of ``read`` (those read where they stand)."""
         r = self.reader
         names = {a.get("Name") for holder in r.children(data, "Attributes") for a in r.children(holder, "Attribute")}
-        return name is not None and data.get("name") == ATTRIBUTES_DATA and names == {name}
+        return read is not None and data.get("name") == ATTRIBUTES_DATA and bool(names) and names <= read
 
     def collect_foreign(self, root: ET.Element) -> None:
         """Count other tools' addData entries anywhere in the document (those not understood are reported)."""

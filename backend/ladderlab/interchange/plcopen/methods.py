@@ -27,7 +27,7 @@ from collections.abc import Callable
 from ...model.project import Accessor, Method, MethodAccess, Pou, Property
 from ...st import ast
 from ...st.parser import parse_declarations, parse_source
-from ...st.pragmas import head_call_after_init, with_call_after_init
+from ...st.pragmas import head_call_after_init, head_monitoring, headed_by, monitoring_pragma, with_call_after_init
 from ...st.printer import print_declarations, print_type
 from ...storage.st_text import method_header
 from .vars import ATTRIBUTES_DATA, parse_type_text, write_documentation, write_type, write_var_list
@@ -88,6 +88,7 @@ def read_properties(
                 text = declarations(holder)[0] if holder is not None else ""
                 accessors[kind] = Accessor(declarations=text, body=body)
         access = _access(element, interface, reader)
+        accessors = _monitored(accessors, [element, *([interface] if interface is not None else [])], reader)
         found.append(Property(name=name, type=type_text or "", access=access, **accessors))
     return found
 
@@ -165,6 +166,7 @@ def write_methods(node: ET.Element, pou: Pou) -> ET.Element | None:
         if spec is not None:
             write_type(sub(interface, "returnType"), spec)
         _write_access(interface, prop.access)
+        write_monitoring(interface, prop)
         for tag, accessor in (("GetAccessor", prop.get), ("SetAccessor", prop.set)):
             if accessor is not None:
                 holder = sub(element, tag)
@@ -377,14 +379,7 @@ def _report_implicit(method: ET.Element, pou: str, reader: Reader) -> None:
 def call_after_init(holder: ET.Element, interface: ET.Element | None, reader: Reader) -> bool:
     """Whether CODESYS marked a POU or method ``{attribute 'call_after_init'}``: the attribute in CODESYS's attributes
     entry of it or of its interface, or the pragma in its declaration text as TwinCAT writes it."""
-    holders = [holder, *([interface] if interface is not None else [])]
-    names = {
-        (attribute.get("Name") or "").lower()
-        for one in holders
-        for data in data_entries(one, reader, ATTRIBUTES_DATA)
-        for attributes in reader.children(data, "Attributes")
-        for attribute in reader.children(attributes, "Attribute")
-    }
+    names = _attributes([holder, *([interface] if interface is not None else [])], reader)
     texts = _entries(holder, reader, PLAINTEXT_DATA, "InterfaceAsPlainText") + reader.children(
         holder, "InterfaceAsPlainText"
     )
@@ -400,15 +395,50 @@ def with_attribute(declarations: str, marked: bool) -> str:
 def write_call_after_init(interface: ET.Element, declarations: str) -> None:
     """CODESYS's attributes entry for {attribute 'call_after_init'} heading ``declarations``, in the interface's
     addData (made when it has none yet: it comes before the documentation)."""
-    if head_call_after_init(declarations) is None:
-        return
+    if head_call_after_init(declarations) is not None:
+        _write_attribute(interface, "call_after_init", "")
+
+
+def _write_attribute(interface: ET.Element, name: str, value: str) -> None:
+    """CODESYS's attributes entry holding the attribute ``name`` := ``value`` in the interface's addData (made when it
+    has none yet: it comes before the documentation)."""
     add = next((c for c in interface if isinstance(c.tag, str) and local(c) == "addData"), None)
     data = sub(
         add if add is not None else sub(interface, "addData"),
         "data",
         {"name": ATTRIBUTES_DATA, "handleUnknown": "implementation"},
     )
-    sub(sub(data, "Attributes"), "Attribute", {"Name": "call_after_init", "Value": ""})
+    sub(sub(data, "Attributes"), "Attribute", {"Name": name, "Value": value})
+
+
+def write_monitoring(interface: ET.Element, prop: Property) -> None:
+    """CODESYS's attributes entry for a property's {attribute 'monitoring'} (heading its GET's, else SET's,
+    declarations in the model: st/monitoring.py), in the property's interface."""
+    accessor = prop.get or prop.set
+    found = head_monitoring(accessor.declarations) if accessor is not None else None
+    if found is not None:
+        _write_attribute(interface, "monitoring", found[0])
+
+
+def _attributes(holders: list[ET.Element], reader: Reader) -> dict[str, str]:
+    """CODESYS's attributes of ``holders`` (their attributes entries): lower-case name -> value."""
+    return {
+        (attribute.get("Name") or "").lower(): attribute.get("Value") or ""
+        for one in holders
+        for data in data_entries(one, reader, ATTRIBUTES_DATA)
+        for attributes in reader.children(data, "Attributes")
+        for attribute in reader.children(attributes, "Attribute")
+    }
+
+
+def _monitored(accessors: dict[str, Accessor], holders: list[ET.Element], reader: Reader) -> dict[str, Accessor]:
+    """A property's accessors, the first headed by {attribute 'monitoring'} when CODESYS marked the property so."""
+    mode = _attributes(holders, reader).get("monitoring")
+    first = next(iter(accessors), None)
+    if not mode or first is None or head_monitoring(accessors[first].declarations) is not None:
+        return accessors
+    headed = headed_by(monitoring_pragma(mode), accessors[first].declarations)
+    return {**accessors, first: accessors[first].model_copy(update={"declarations": headed})}
 
 
 def read_extends(interface: ET.Element | None, reader: Reader) -> str | None:
