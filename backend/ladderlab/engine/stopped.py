@@ -14,6 +14,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from types import FrameType
 
+from .codegen.faults import generated_lines
 from .codegen.module import Generated
 
 
@@ -23,19 +24,18 @@ def stopped_elements(
     """Probe-view key (an instance path, a FUNCTION's name: upper case) -> the element ids ``error`` stopped.
     ``owner(frame, pou)`` is the key of the probes a generated frame running ``pou``'s code stores, None when no
     probe view shows them."""
-    points: dict[tuple[str, str, str | None, str], int] = {}  # (key, POU, body, network) -> the stopping origin id
+    # (key, POU, body, network) -> the origin id of the statement that did not end
+    points: dict[tuple[str, str, str | None, str | None], int] = {}
     line_origins, origins = generated.line_origins, generated.origins
-    tb = error.__traceback__
-    while tb is not None:  # outermost frame first; a frame's line is its fault's, or its call's in progress
-        if tb.tb_frame.f_code.co_filename == filename and 0 < tb.tb_lineno <= len(line_origins):
-            oid = line_origins[tb.tb_lineno - 1]
-            origin = origins[oid] if oid is not None else None
-            if origin is not None and origin.network is not None:
-                key = owner(tb.tb_frame, origin.pou)
-                if key is not None:
-                    where = (key, origin.pou.upper(), origin.body, origin.network)
-                    points[where] = max(points.get(where, oid), oid)  # (an outlined part: the inner frame's point)
-        tb = tb.tb_next
+    for frame, line in generated_lines(error, filename):  # outermost first: the fault's line, or a call's
+        oid = line_origins[line - 1] if 0 < line <= len(line_origins) else None
+        if oid is None or origins[oid].network is None:
+            continue
+        origin = origins[oid]
+        key = owner(frame, origin.pou)
+        if key is not None:
+            where = (key, origin.pou.upper(), origin.body, origin.network)
+            points[where] = max(points.get(where, oid), oid)  # (an outlined part: the inner frame's point)
     stopped: dict[str, set[str]] = {}
     for (key, pou, body, network), point in points.items():
         table = generated.context.probes_of(pou)

@@ -89,9 +89,7 @@ class ProbeTable:
         """The probe number of ``element`` (None: not probed)."""
         return self._index.get(element)
 
-    def probe(
-        self, element: str, group: int, origin: int, constant: object = UNSET, network: int | None = None
-    ) -> int:
+    def probe(self, element: str, group: int, origin: int, constant: object = UNSET, network: int | None = None) -> int:
         index = self._index.get(element)
         if index is None:
             index = self._index[element] = len(self.elements)
