@@ -232,3 +232,35 @@ def test_a_fault_in_an_st_fb_stops_the_callers_network_from_the_call_box_on(vari
     assert {e: shown[e] for e in ("s", "a", "a.OUT")} == {"s": True, "a": True, "a.OUT": 10}
     assert {e for e, value in shown.items() if value is None} == set(shown) - {"s", "a", "a.OUT"}
     assert {"f", "o"} <= set(shown)
+
+
+@pytest.mark.parametrize("variant", VARIANTS)
+def test_a_fault_inside_an_ld_function_stops_its_network_and_the_callers(variant):
+    quotient = ld_pou(
+        "Quot",
+        "VAR_INPUT A, B : INT; END_VAR VAR T : INT; END_VAR",
+        rung(
+            "m1",
+            box("p", "ADD", en=True, outputs={"OUT": "T"}, IN1="A", IN2="1"),
+            box("q", "DIV", en=True, outputs={"OUT": "Quot"}, IN1="T", IN2="B"),
+        ),
+        kind="function",
+    )
+    quotient.return_type = "INT"
+    main = ld_pou(
+        "Main",
+        "VAR START : BOOL := TRUE; OK : BOOL; X : INT := 6; Y : INT := 3; Z : INT; END_VAR",
+        rung(
+            "n1", contact("s", "START"), box("f", "Quot", en=True, outputs={"OUT": "Z"}, A="X", B="Y"), coil("o", "OK")
+        ),
+    )
+    sim = _sim(variant, quotient, main)
+    sim.cycle(1)
+    assert _shown(sim, "Quot", "QUOT") == {"p": True, "p.OUT": 7, "q": True, "q.OUT": 2}
+    assert _shown(sim, "MAIN") == {"s": True, "f": True, "f.OUT": 2, "o": True}
+    sim.write("Main.X", 8)
+    sim.write("Main.Y", 0)
+    sim.cycle(1)
+    assert sim.fault is not None and (sim.fault.code, sim.fault.pou) == ("division_by_zero", "QUOT")
+    assert _shown(sim, "Quot", "QUOT") == {"p": True, "p.OUT": 9, "q": None, "q.OUT": None}
+    assert _shown(sim, "MAIN") == {"s": True, "f": None, "f.OUT": None, "o": None}
