@@ -523,11 +523,6 @@ class Simulation:
             if stamp == self._stamp:  # (another task's fault in the same scan)
                 found = {key: found.get(key, frozenset()) | stopped.get(key, frozenset()) for key in stopped | found}
             self._stopped = (self._stamp, found)
-        if self._quiet_stamp == self._stamp - 1:
-            # The elements after the fault in the failing network count as run (``probes``) and show the values an
-            # earlier scan left: after a quiet scan not the previous scan's, as recording every scan shows. So this
-            # scan counts as quiet too: its networks are unknown (a scan history recomputes them: History.seek).
-            self._quiet_stamp = self._stamp
 
     def _record_fault(self, error: Exception, task: str, now: float) -> None:
         """``error`` as a located fault of ``task`` (a task's name, or what ran outside the tasks) at ``now``."""
