@@ -15,6 +15,7 @@ import pytest
 from ladderlab.model import fbd
 from ladderlab.model.project import Pou, Project
 from ladderlab.simulation.build import build_project
+from ladderlab.simulation.history import History
 from tests.ir.diagram_support import blk, box, coil, contact, inp, ld_pou, net, out, rung
 
 VARIANTS = ["monitor", "debug"]
@@ -264,3 +265,17 @@ def test_a_fault_inside_an_ld_function_stops_its_network_and_the_callers(variant
     assert sim.fault is not None and (sim.fault.code, sim.fault.pou) == ("division_by_zero", "QUOT")
     assert _shown(sim, "Quot", "QUOT") == {"p": True, "p.OUT": 9, "q": None, "q.OUT": None}
     assert _shown(sim, "MAIN") == {"s": True, "f": None, "f.OUT": None, "o": None}
+
+
+def test_a_history_seek_to_the_faulted_scan_shows_what_the_fault_stopped():
+    """The history cannot redo a faulted scan: a seek to it restores the checkpoint after it (History.seek)."""
+    sim = _sim("monitor", _ld_main())
+    history = History(sim, min_interval=4)
+    sim.cycle(3)
+    sim.write("Main.Y", 0)
+    sim.cycle(1)
+    assert sim.fault is not None and sim.fault.scan == 3
+    live = _shown(sim, "MAIN")
+    assert (live["a.OUT"], live["o"]) == (8, None)
+    assert _shown(history.seek(1), "MAIN")["o"] is True
+    assert _shown(history.seek(3), "MAIN") == live
