@@ -34,7 +34,7 @@ import contextlib
 import time
 from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, replace
-from types import GeneratorType
+from types import FrameType, GeneratorType
 from typing import Any, cast
 
 from ..iec.addresses import parse_address
@@ -67,6 +67,7 @@ from .paths import (
 )
 from .process_image import AREA_ORDER, IoPoint, ProcessImage, key_of, located_address, view_kind
 from .state import SimState, data_of, holds_references, restore_into, restore_list
+from .stopped import stopped_elements
 from .stored_once import StoredOnce
 from .tasks import DEFAULT_WATCHDOG_S, Schedule, Task, task_table
 
@@ -191,6 +192,8 @@ class Simulation:
         #: (instance, its own flags, its list of False) of the instances with a viewed network, until ``view``
         self._mutes: list[tuple[object, list[bool], list[bool]]] | None = None
         self._quiet_stamp = -1  # the stamp of the last scan that recorded no network (``quiet``)
+        #: (the stamp of a scan that faulted, probe-view key -> the elements its faults stopped: ``probes``)
+        self._stopped: tuple[int, dict[str, frozenset[str]]] = (-1, {})
         self._stored_once = StoredOnce(self._context)  # constant FB inputs an online change may have overwritten
         self._attach_debugger()
         self._initialise(warm=False)
@@ -537,11 +540,12 @@ class Simulation:
     def _fault(self, task: Task, error: Exception, now: float) -> None:
         task.stopped = True
         self._record_fault(error, task.name, now)
-        if self._quiet_stamp == self._stamp - 1:
-            # The elements after the fault in the failing network count as run (``probes``) and show the values an
-            # earlier scan left: after a quiet scan not the previous scan's, as recording every scan shows. So this
-            # scan counts as quiet too: its networks are unknown (a scan history recomputes them: History.seek).
-            self._quiet_stamp = self._stamp
+        if self.variant != "fast":
+            stamp, stopped = self._stopped
+            found = stopped_elements(error, self.compiled.generated, self.compiled.filename, self._probe_owner)
+            if stamp == self._stamp:  # (another task's fault in the same scan)
+                found = {key: found.get(key, frozenset()) | stopped.get(key, frozenset()) for key in stopped | found}
+            self._stopped = (self._stamp, found)
 
     def _record_fault(self, error: Exception, task: str, now: float) -> None:
         """``error`` as a located fault of ``task`` (a task's name, or what ran outside the tasks) at ``now``."""
@@ -795,7 +799,21 @@ class Simulation:
                 self._read_some_deferred(key, obj, table, plan.deferred, recorded)
             values, stamps = obj.ll_pr, obj.ll_px  # type: ignore[attr-defined]  # generated POU classes and their namespace are untyped
         found_values, executed, unknown = plan.read(values, stamps, self._stamp, recorded, UNSET)
+        stamp, stopped = self._stopped
+        if stamp == self._stamp and key in stopped:  # the elements after a fault did not run, though their group did
+            return ProbeView(found_values, frozenset(executed) - stopped[key], frozenset(unknown))
         return ProbeView(found_values, frozenset(executed), frozenset(unknown))
+
+    def _probe_owner(self, frame: FrameType, pou: str) -> str | None:
+        """The ``probes`` key of the probes a generated frame running ``pou``'s code stores (``stopped_elements``):
+        its instance's path when that instance is of ``pou`` (not a method's or a base body's), a FUNCTION's name."""
+        me = frame.f_locals.get("self")
+        if me is None:
+            found = self._context.pous.get(pou.upper())
+            return pou.upper() if found is not None and found.kind == "function" else None
+        path = self._instance_path(me)
+        entry = self._instances_by_path().get(path.upper()) if path is not None else None
+        return path.upper() if entry is not None and entry[1] == pou.upper() else None  # type: ignore[union-attr]  # path is set with entry
 
     def _frame_plan(self, key: str, table: ProbeTable, elements: tuple[str, ...] | None, networks: bool) -> FramePlan:
         """``frame_plan`` of these elements, kept for the next frame (a client asks for the same ones each time)."""
@@ -1219,6 +1237,7 @@ class Simulation:
             {path: (fault.event.to_json(), fault.state()) for path, (_, fault) in self._injections.items()},
             tuple(event.to_json() for event, _, _ in self._pending),
             {name: data_of(self._ns[name]) for name in self._function_probe_lists()},
+            dict(self._stopped[1]) if self._stopped[0] == self._stamp else {},
         )
 
     def _function_probe_lists(self) -> list[str]:
@@ -1256,6 +1275,7 @@ class Simulation:
         self._stamp = state.stamp
         self._ns["ll_scan"] = state.stamp
         self._quiet_stamp = -1  # (a state captured after a quiet scan holds its silenced flags: ``_fit_recording``)
+        self._stopped = (state.stamp, dict(state.stopped))
         self._forces.clear()
         for path, value in state.forces.items():
             location = self._resolver.resolve(path)

@@ -65,6 +65,8 @@ class SimState:
     injections: dict[str, tuple[dict, object]] = field(default_factory=dict)
     pending: tuple[dict, ...] = ()  # inputs waiting for the next scan start, as JSON, in order
     functions: dict[str, object] = field(default_factory=dict)  # FUNCTION POUs' probe lists by name (monitoring)
+    #: probe-view key -> the elements a fault stopped in the last scan (``engine/stopped.py``; monitoring)
+    stopped: dict[str, frozenset[str]] = field(default_factory=dict)
 
 
 def capture(sim: Simulation) -> SimState:

@@ -289,9 +289,7 @@ class History:
         watchdog depends on the machine's speed, and the runner records every scan of a program that checks it),
         else the checkpoint after it is restored by ``seek`` (its networks unknown). The next seek restores a
         checkpoint again (the scan stays a barrier)."""
-        # From before the scan before it, which records too: the elements after the fault count as run and show the
-        # values it left (``Simulation.probes``), as when every scan records (unless that scan cannot be redone)
-        checkpoint = self._checkpoint_at(scan if scan - 1 in self._barriers else scan - 1)
+        checkpoint = self._checkpoint_at(scan)
         if checkpoint.scan > scan:
             return False
         replay = self._replay_sim()

@@ -80,20 +80,26 @@ class ProbeTable:
     #: ``Statements.block``): their count, and each probe's network (absent: stored in every scan).
     networks: int = 0
     network_of: dict[int, int] = field(default_factory=dict)
+    #: The origin id (``ModuleContext.origins``, numbered in emission order) of the statement storing each probe,
+    #: its last one: the probes a fault stopped are those of its network from its statement on (engine/stopped.py)
+    origins: list[int] = field(default_factory=list)
     _index: dict[str, int] = field(default_factory=dict)
 
     def index(self, element: str) -> int | None:
         """The probe number of ``element`` (None: not probed)."""
         return self._index.get(element)
 
-    def probe(self, element: str, group: int, constant: object = UNSET, network: int | None = None) -> int:
+    def probe(self, element: str, group: int, origin: int, constant: object = UNSET, network: int | None = None) -> int:
         index = self._index.get(element)
         if index is None:
             index = self._index[element] = len(self.elements)
             self.elements.append(element)
             self.groups.append([])
+            self.origins.append(origin)
             if network is not None:
                 self.network_of[index] = network
+        else:
+            self.origins[index] = origin
         groups = self.groups[index]
         if not groups or groups[-1] != group:  # groups are numbered in emission order
             groups.append(group)

@@ -9,6 +9,7 @@ that frame (the instance, the function's locals, the globals).
 
 from __future__ import annotations
 
+from collections import deque
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from types import FrameType
@@ -145,13 +146,18 @@ def make_fault(
 
 
 def _deepest_generated_frame(error: BaseException, filename: str) -> tuple[FrameType | None, int]:
+    last = deque(generated_lines(error, filename), maxlen=1)
+    return last[0] if last else (None, 0)
+
+
+def generated_lines(error: BaseException, filename: str) -> Iterator[tuple[FrameType, int]]:
+    """The frames of the generated module ``error`` went through, outermost first, with the line each stood at
+    (the deepest one's fault; in the others, the call under way)."""
     tb = error.__traceback__
-    found: tuple[FrameType | None, int] = (None, 0)
     while tb is not None:
         if tb.tb_frame.f_code.co_filename == filename:
-            found = (tb.tb_frame, tb.tb_lineno)
+            yield tb.tb_frame, tb.tb_lineno
         tb = tb.tb_next
-    return found
 
 
 def _with_pointers(variables: list[ir.Var]) -> Iterator[tuple[ir.Var, bool]]:

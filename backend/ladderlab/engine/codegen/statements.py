@@ -716,7 +716,8 @@ class Statements:
         if self.group is None:
             self.group = self.probes.new_group()  # type: ignore[union-attr]
             self.src.line(f"ll_px[{self.group}] = ll_k")
-        return self.probes.probe(s.element, self.group, constant, self.network)  # type: ignore[union-attr]
+        origin = -1 if self.src.origin is None else self.src.origin  # (a statement's: ``statement`` sets it)
+        return self.probes.probe(s.element, self.group, origin, constant, self.network)  # type: ignore[union-attr]
 
     def _defer(self, s: ir.Probe) -> None:
         index = self._record(s)
