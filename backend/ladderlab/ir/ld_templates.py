@@ -15,7 +15,9 @@ in-out, of a method's instance or of a type other than an elementary one or an F
 its outputs, ``T1.Q``). A network becomes a template only when lowering it reported nothing, added no slot (a
 pooled temporary, an edge memory, a located address) and made IR nodes this module knows how to copy; the
 statements are made anew by one function compiled per template, the expressions shared unless they hold one of
-the network's variables (tests/ir/test_ld_templates.py compares the IR with the plain lowering's).
+the network's variables (tests/ir/test_ld_templates.py compares the IR with the plain lowering's). A filled
+network's block says so (``Block.filled``: its template and variables), unless one of its variables is named like
+another variable of the template's statements: the code generator then knows its shape without walking it.
 """
 
 from __future__ import annotations
@@ -35,6 +37,7 @@ from .nodes import (
     Const,
     Convert,
     FbCall,
+    Filled,
     FnCall,
     If,
     Member,
@@ -159,6 +162,7 @@ class _Template:
             raise _Plain  # a text naming a variable of the network: its IR would be bound too (only the text is kept)
         self._ids, self._origins = shape.ids, origins  # origins: id() of a template origin -> its position
         self._shared: list[Any] = []
+        self.others: set[str] = set()  # the names of the statements' variables that are not the network's
         source = f"lambda v, o, ids: [{', '.join(self._statement(s) for s in statements)}]"
         self.fill: Callable[[list[Var], list[Origin], list[str]], list[Stmt]] = eval(  # our own text
             source, {"c": self._shared, "_select": _select}
@@ -221,6 +225,7 @@ class _Template:
         kind = type(value)
         if kind is Var:
             if value.name not in self._names:
+                self.others.add(value.name)
                 return False
             if value.scope != "local" or any(type(s) is not Member for s in value.path):
                 raise _Plain
@@ -278,4 +283,6 @@ class LdTemplates:
         pou, name, ids = self.ctx.name, network.id, shape.ids
         origins = [diagram_origin(pou, name, ident) for ident in ids]
         origins.append(diagram_origin(pou, name))
-        return Block(template.fill(shape.values, origins, ids), origins[-1], None)
+        values, others = shape.values, template.others
+        filled = Filled(template, tuple(values)) if not any([var.name in others for var in values]) else None
+        return Block(template.fill(values, origins, ids), origins[-1], None, filled)

@@ -396,13 +396,27 @@ class Probe:
     kind: Literal["element", "transition"] = "element"
 
 
+@dataclass(frozen=True, slots=True, eq=False)
+class Filled:
+    """A network filled in from the template of its shape (ir/ld_templates.py), for the code generator to reuse
+    that knowledge (engine/codegen/templates.py). Blocks of one ``template`` hold the same statements but for the
+    network's ``variables`` (each a local slot's whole variable, none named like another variable of the
+    statements), where each appears in the same places (itself or below it, ``T1.Q``), and for the origins and
+    probe names: every other value is the same object in all of them."""
+
+    template: object
+    variables: tuple[Var, ...]
+
+
 @dataclass(slots=True)
 class Block:
-    """One network (LD/FBD) or the whole body (ST); ``label`` is its jump target, if any."""
+    """One network (LD/FBD) or the whole body (ST); ``label`` is its jump target, if any; ``filled``: how it was
+    filled in from its shape's template, if it was (its statements left as filled)."""
 
     statements: list[Stmt]
     origin: Origin
     label: str | None = None
+    filled: Filled | None = field(default=None, repr=False, compare=False)
 
 
 Stmt = Assign | If | Case | For | While | Repeat | Exit | Continue | Return | FbCall | FnCall | Jump | Probe

@@ -25,8 +25,10 @@ the read but that next statement, which cannot call anything before the read eit
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 from ...ir import nodes as ir
-from .mentions import expression_nodes, walk
+from .mentions import expression_nodes, walk, walk_filled
 
 #: Operators whose result is computed without a call that could fault (boolean logic and comparisons).
 _PURE_OPERATORS = frozenset({"AND", "OR", "XOR", "AND_THEN", "OR_ELSE", "EQ", "NE", "LT", "LE", "GT", "GE"})
@@ -46,11 +48,54 @@ def dead_stores(
     if not temps:
         return dead, folds
     live = set(live_out)
+    known: dict[tuple[object, frozenset[str]], _Known] = {}
     for block in reversed(blocks):
-        live = _backward(block.statements, live, temps, dead, folds)
-        if probes:
-            live |= _exposed_probe_reads(block.statements, temps)
+        filled = block.filled
+        if filled is None or any([var.name in temps for var in filled.variables]):
+            live = _block(block, live, temps, probes, dead, folds)
+            continue
+        key = (filled.template, frozenset(live))
+        found = known.get(key)
+        walked = walk_filled(block.statements, [])
+        if found is None:
+            own_dead: set[int] = set()
+            own_folds: dict[int, bool] = {}
+            live = _block(block, live, temps, probes, own_dead, own_folds)
+            dead |= own_dead
+            folds.update(own_folds)
+            position = {id(s): i for i, s in enumerate(walked)}
+            known[key] = _Known(
+                frozenset(live),
+                [position[s] for s in own_dead],
+                [(position[s], once) for s, once in own_folds.items()],
+            )
+        else:
+            live = set(found.live)
+            dead.update([id(walked[i]) for i in found.dead])
+            folds.update([(id(walked[i]), once) for i, once in found.folds])
     return dead, folds
+
+
+@dataclass(slots=True)
+class _Known:
+    """What the pass found for a network filled in from a lowering template (``ir.Filled``) given the temporaries
+    live after it: the same for every network of that template whose variables are no temporaries (they differ
+    from the template's first network in nothing else the pass reads). The statements by their position in
+    ``walk_filled``'s order."""
+
+    live: frozenset[str]  # before the network
+    dead: list[int]
+    folds: list[tuple[int, bool]]
+
+
+def _block(
+    block: ir.Block, live: set[str], temps: frozenset[str], probes: bool, dead: set[int], folds: dict[int, bool]
+) -> set[str]:
+    """The temporaries live before ``block`` given those live after it (``dead_stores``)."""
+    live = _backward(block.statements, live, temps, dead, folds)
+    if probes:
+        live |= _exposed_probe_reads(block.statements, temps)
+    return live
 
 
 def _backward(
