@@ -17,6 +17,12 @@ module does not model (loops, jumps, returns), or a side effect of the emission 
 pages and temporaries used (a diagnostic, a bound constant, a numbered temporary, an outlined body). Only the
 fast variant, which records no probe, is filled in (tests/engine/test_block_templates.py compares the module,
 its line origins and its origins with those of the plain emission).
+
+A network the LD lowering filled in from a template of its own (``ir.Block.filled``) is not walked for its shape:
+the lowering's networks of one template differ only in their variables (and origins and probe names), so its shape
+is that of the first of them whose variables have the same types and pages and whose statements have the same
+dead stores, folds and stored inputs (``_Filled``, ``_Twin``; tests/engine/test_filled_networks.py compares the
+code with that of the same IR without ``filled``).
 """
 
 from __future__ import annotations
@@ -134,9 +140,17 @@ class _Filled:
             codes.append(code)
         if len(set(codes)) != len(codes):
             return None
-        walked = walk_filled(block.statements, [])  # (``_Shape``'s order)
-        dead, folds, once = st.dead, st.folds, st.stored_once
-        flags = tuple([(id(s) in dead, folds.get(id(s)), once(s) if type(s) is ir.FbCall else None) for s in walked])
+        once = st.stored_once
+        liveness = st.filled_liveness.get(id(block))
+        if liveness is not None:  # its dead stores and folds: its template's for the temporaries live after it
+            after, walked = liveness
+            flags: tuple = (after, tuple([once(s) for s in walked if type(s) is ir.FbCall]))
+        else:
+            walked = walk_filled(block.statements, [])  # (``_Shape``'s order)
+            dead, folds = st.dead, st.folds
+            flags = tuple(
+                [(id(s) in dead, folds.get(id(s)), once(s) if type(s) is ir.FbCall else None) for s in walked]
+            )
         return _Filled((tuple(facts), flags), codes, walked)
 
 
