@@ -143,4 +143,5 @@ def test_a_network_whose_variable_another_text_of_its_shape_names_is_not_marked_
     networks.append([("contact", "B2", "no"), ("compare", "I0", "I1 + 1"), ("coil", "P0", "normal")])
     filled = _same_without_filled(_project(networks))
     assert [block.origin.network for block in filled] == ["n3"]
-    assert [var.name for var in filled[0].filled.variables] == ["B2", "I0", "P0"]  # type: ignore[union-attr]
+    (block,) = filled
+    assert [var.name for var in block.filled.variables(block.statements)] == ["B2", "I0", "P0"]  # type: ignore[union-attr]

@@ -16,8 +16,9 @@ its outputs, ``T1.Q``). A network becomes a template only when lowering it repor
 pooled temporary, an edge memory, a located address) and made IR nodes this module knows how to copy; the
 statements are made anew by one function compiled per template, the expressions shared unless they hold one of
 the network's variables (tests/ir/test_ld_templates.py compares the IR with the plain lowering's). A filled
-network's block says so (``Block.filled``: its template and variables), unless one of its variables is named like
-another variable of the template's statements: the code generator then knows its shape without walking it.
+network's block says so (``Block.filled``: its template's, which finds its variables in it), unless one of its
+variables is named like another variable of the template's statements: the code generator then knows its shape
+without walking it.
 """
 
 from __future__ import annotations
@@ -167,6 +168,7 @@ class _Template:
         self.fill: Callable[[list[Var], list[Origin], list[str]], list[Stmt]] = eval(  # our own text
             source, {"c": self._shared, "_select": _select}
         )
+        self.filled = Filled(eval(f"lambda s: ({''.join(f'{a}, ' for a in _places(statements, self._names))})"))
 
     def _constant(self, value: Any) -> str:
         self._shared.append(value)
@@ -239,6 +241,29 @@ class _Template:
         return any([self._holds(getattr(value, name)) for name in kind.__slots__ if name not in _TYPES])
 
 
+def _places(statements: list[Stmt], names: dict[str, int]) -> list[str]:
+    """Where each of the network's variables (``names``) that ``statements`` hold is found in them
+    (``s[2].value.left``), in the order of ``names``: as itself where it appears so, else with its first member."""
+    whole: dict[str, str] = {}
+    member: dict[str, str] = {}
+
+    def visit(value: Any, place: str) -> None:
+        kind = type(value)
+        if kind is Var:
+            if value.name in names:
+                (member if value.path else whole).setdefault(value.name, place)
+        elif kind is list or kind is tuple:
+            for i, item in enumerate(value):
+                visit(item, f"{place}[{i}]")
+        elif kind in _STATEMENTS or kind in _COMPOSITE:
+            for name in kind.__slots__:
+                if name not in _TYPES and name != "origin":
+                    visit(getattr(value, name), f"{place}.{name}")
+
+    visit(statements, "s")
+    return [whole.get(name) or member[name] for name in names if name in whole or name in member]
+
+
 def _select(value: Var, member: Var) -> Var:
     """A member of the network's FB instance: the template's selectors below the instance's own path."""
     return Var(value.scope, value.name, member.type, (*value.path, *member.path))
@@ -284,5 +309,5 @@ class LdTemplates:
         origins = [diagram_origin(pou, name, ident) for ident in ids]
         origins.append(diagram_origin(pou, name))
         values, others = shape.values, template.others
-        filled = Filled(template, tuple(values)) if not any([var.name in others for var in values]) else None
+        filled = template.filled if not any([var.name in others for var in values]) else None
         return Block(template.fill(values, origins, ids), origins[-1], None, filled)

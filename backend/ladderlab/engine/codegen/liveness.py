@@ -61,11 +61,11 @@ def dead_stores(
     known: dict[tuple[object, frozenset[str]], _Known] = {}
     for block in reversed(blocks):
         template = block.filled
-        if template is None or any([var.name in temps for var in template.variables]):
+        if template is None or any([var.name in temps for var in template.variables(block.statements)]):
             live = _block(block, live, temps, probes, dead, folds)
             continue
         after = frozenset(live)
-        key = (template.template, after)
+        key = (template, after)
         found = known.get(key)
         walked = walk_filled(block.statements, [])
         if filled is not None:

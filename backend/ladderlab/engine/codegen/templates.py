@@ -84,7 +84,7 @@ class BlockTemplates:
         if filled is None:
             self._emit(st, block, own_group)
             return
-        key = (st.src.depth, st.blocks, own_group, block.filled.template, filled.key)  # type: ignore[union-attr]
+        key = (st.src.depth, st.blocks, own_group, block.filled, filled.key)
         twin = self._twins.get(key)
         if twin is None:
             self._twins[key] = self._emit(st, block, own_group, filled.codes)
@@ -132,7 +132,7 @@ class _Filled:
         place = st.scope.placed
         facts: list[tuple] = []
         codes: list[str] = []
-        for var in block.filled.variables:  # type: ignore[union-attr]
+        for var in block.filled.variables(block.statements):  # type: ignore[union-attr]
             code, ty, page = place(var)
             if not (page or code.startswith("self.v_")) or code.startswith("v_w", code.find(".") + 1):
                 return None  # (not a slot of this POU, or an escaped name: ``_Shape.var``)
