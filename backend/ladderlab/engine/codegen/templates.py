@@ -73,7 +73,7 @@ class BlockTemplates:
 
     def __init__(self) -> None:
         self._found: dict[tuple, _Template | None] = {}  # None: a shape that is emitted as usual
-        self._twins: dict[tuple, _Twin] = {}  # by a filled network's template and what its shape adds to it
+        self._twins: dict[tuple[Any, ...], _Twin] = {}  # by a filled network's template and what its shape adds to it
 
     def emit(self, st: Statements, block: ir.Block, own_group: bool) -> None:
         """``st.statements(block.statements, own_group)``, from the block's template where there is one. A network
@@ -92,7 +92,12 @@ class BlockTemplates:
             st.statements(block.statements, own_group=own_group)
         else:
             codes = filled.codes
-            _fill(st, twin.template, [code if type(code) is str else codes[code] for code in twin.codes], filled.walked)
+            _fill(
+                st,
+                twin.template,
+                [code if isinstance(code, str) else codes[code] for code in twin.codes],
+                filled.walked,
+            )
 
     def _emit(self, st: Statements, block: ir.Block, own_group: bool, variables: list[str] | None = None) -> _Twin:
         """``emit`` by the block's shape; what it found, for the twins of a filled network (``variables``: the codes
@@ -122,7 +127,7 @@ class _Filled:
     template (``key``: its variables' types and pages, its statements' liveness and stored inputs), its variables'
     codes and its statements in ``_Shape``'s order."""
 
-    key: tuple
+    key: tuple[Any, ...]
     codes: list[str]
     walked: list[ir.Stmt]
 
@@ -130,7 +135,7 @@ class _Filled:
     def of(st: Statements, block: ir.Block) -> _Filled | None:
         """None when a variable is not a slot of the POU named plainly (its shape is computed: ``_Shape.var``)."""
         place = st.scope.placed
-        facts: list[tuple] = []
+        facts: list[tuple[int, int, int]] = []
         codes: list[str] = []
         for var in block.filled.variables(block.statements):  # type: ignore[union-attr]
             code, ty, page = place(var)
@@ -144,7 +149,7 @@ class _Filled:
         liveness = st.filled_liveness.get(id(block))
         if liveness is not None:  # its dead stores and folds: its template's for the temporaries live after it
             after, walked = liveness
-            flags: tuple = (after, tuple([once(s) for s in walked if type(s) is ir.FbCall]))
+            flags: tuple[Any, ...] = (after, tuple([once(s) for s in walked if type(s) is ir.FbCall]))
         else:
             walked = walk_filled(block.statements, [])  # (``_Shape``'s order)
             dead, folds = st.dead, st.folds
