@@ -168,7 +168,8 @@ class _Template:
         self.fill: Callable[[list[Var], list[Origin], list[str]], list[Stmt]] = eval(  # our own text
             source, {"c": self._shared, "_select": _select}
         )
-        self.filled = Filled(eval(f"lambda s: ({''.join(f'{a}, ' for a in _places(statements, self._names))})"))
+        places = "".join(f"{place}, " for place in _places(statements, self._names))
+        self.filled = Filled(eval(f"lambda s: ({places})", {}))  # (our own text)
 
     def _constant(self, value: Any) -> str:
         self._shared.append(value)
@@ -246,22 +247,24 @@ def _places(statements: list[Stmt], names: dict[str, int]) -> list[str]:
     (``s[2].value.left``), in the order of ``names``: as itself where it appears so, else with its first member."""
     whole: dict[str, str] = {}
     member: dict[str, str] = {}
-
-    def visit(value: Any, place: str) -> None:
-        kind = type(value)
-        if kind is Var:
-            if value.name in names:
-                (member if value.path else whole).setdefault(value.name, place)
-        elif kind is list or kind is tuple:
-            for i, item in enumerate(value):
-                visit(item, f"{place}[{i}]")
-        elif kind in _STATEMENTS or kind in _COMPOSITE:
-            for name in kind.__slots__:
-                if name not in _TYPES and name != "origin":
-                    visit(getattr(value, name), f"{place}.{name}")
-
-    visit(statements, "s")
+    _visit(statements, "s", names, whole, member)
     return [whole.get(name) or member[name] for name in names if name in whole or name in member]
+
+
+def _visit(value: Any, place: str, names: dict[str, int], whole: dict[str, str], member: dict[str, str]) -> None:
+    """``_places`` below ``value`` (found at ``place``). (Not a closure: a recursive one would be a reference cycle,
+    tests/ir/test_build_memory.py.)"""
+    kind = type(value)
+    if kind is Var:
+        if value.name in names:
+            (member if value.path else whole).setdefault(value.name, place)
+    elif kind is list or kind is tuple:
+        for i, item in enumerate(value):
+            _visit(item, f"{place}[{i}]", names, whole, member)
+    elif kind in _STATEMENTS or kind in _COMPOSITE:
+        for name in kind.__slots__:
+            if name not in _TYPES and name != "origin":
+                _visit(getattr(value, name), f"{place}.{name}", names, whole, member)
 
 
 def _select(value: Var, member: Var) -> Var:
