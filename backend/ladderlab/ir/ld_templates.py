@@ -15,7 +15,10 @@ in-out, of a method's instance or of a type other than an elementary one or an F
 its outputs, ``T1.Q``). A network becomes a template only when lowering it reported nothing, added no slot (a
 pooled temporary, an edge memory, a located address) and made IR nodes this module knows how to copy; the
 statements are made anew by one function compiled per template, the expressions shared unless they hold one of
-the network's variables (tests/ir/test_ld_templates.py compares the IR with the plain lowering's).
+the network's variables (tests/ir/test_ld_templates.py compares the IR with the plain lowering's). A filled
+network's block says so (``Block.filled``: its template's, which finds its variables in it), unless one of its
+variables is named like another variable of the template's statements: the code generator then knows its shape
+without walking it.
 """
 
 from __future__ import annotations
@@ -35,6 +38,7 @@ from .nodes import (
     Const,
     Convert,
     FbCall,
+    Filled,
     FnCall,
     If,
     Member,
@@ -159,10 +163,13 @@ class _Template:
             raise _Plain  # a text naming a variable of the network: its IR would be bound too (only the text is kept)
         self._ids, self._origins = shape.ids, origins  # origins: id() of a template origin -> its position
         self._shared: list[Any] = []
+        self.others: set[str] = set()  # the names of the statements' variables that are not the network's
         source = f"lambda v, o, ids: [{', '.join(self._statement(s) for s in statements)}]"
         self.fill: Callable[[list[Var], list[Origin], list[str]], list[Stmt]] = eval(  # our own text
             source, {"c": self._shared, "_select": _select}
         )
+        places = "".join(f"{place}, " for place in _places(statements, self._names))
+        self.filled = Filled(eval(f"lambda s: ({places})", {}))  # (our own text)
 
     def _constant(self, value: Any) -> str:
         self._shared.append(value)
@@ -221,6 +228,7 @@ class _Template:
         kind = type(value)
         if kind is Var:
             if value.name not in self._names:
+                self.others.add(value.name)
                 return False
             if value.scope != "local" or any(type(s) is not Member for s in value.path):
                 raise _Plain
@@ -232,6 +240,31 @@ class _Template:
         if kind not in _COMPOSITE:
             raise _Plain
         return any([self._holds(getattr(value, name)) for name in kind.__slots__ if name not in _TYPES])
+
+
+def _places(statements: list[Stmt], names: dict[str, int]) -> list[str]:
+    """Where each of the network's variables (``names``) that ``statements`` hold is found in them
+    (``s[2].value.left``), in the order of ``names``: as itself where it appears so, else with its first member."""
+    whole: dict[str, str] = {}
+    member: dict[str, str] = {}
+    _visit(statements, "s", names, whole, member)
+    return [whole.get(name) or member[name] for name in names if name in whole or name in member]
+
+
+def _visit(value: Any, place: str, names: dict[str, int], whole: dict[str, str], member: dict[str, str]) -> None:
+    """``_places`` below ``value`` (found at ``place``). (Not a closure: a recursive one would be a reference cycle,
+    tests/ir/test_build_memory.py.)"""
+    kind = type(value)
+    if kind is Var:
+        if value.name in names:
+            (member if value.path else whole).setdefault(value.name, place)
+    elif kind is list or kind is tuple:
+        for i, item in enumerate(value):
+            _visit(item, f"{place}[{i}]", names, whole, member)
+    elif kind in _STATEMENTS or kind in _COMPOSITE:
+        for name in kind.__slots__:
+            if name not in _TYPES and name != "origin":
+                _visit(getattr(value, name), f"{place}.{name}", names, whole, member)
 
 
 def _select(value: Var, member: Var) -> Var:
@@ -278,4 +311,6 @@ class LdTemplates:
         pou, name, ids = self.ctx.name, network.id, shape.ids
         origins = [diagram_origin(pou, name, ident) for ident in ids]
         origins.append(diagram_origin(pou, name))
-        return Block(template.fill(shape.values, origins, ids), origins[-1], None)
+        values, others = shape.values, template.others
+        filled = template.filled if not any([var.name in others for var in values]) else None
+        return Block(template.fill(values, origins, ids), origins[-1], None, filled)

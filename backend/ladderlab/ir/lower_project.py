@@ -209,6 +209,7 @@ def lower_pou(
     if ctx.before_return:  # (a method: ST, one block)
         if blocks:
             blocks[-1].statements.extend(ctx.before_return)
+            blocks[-1].filled = None  # (its statements are no longer its template's)
         else:
             blocks.append(Block(list(ctx.before_return), Origin(ctx.name)))
     if preamble:

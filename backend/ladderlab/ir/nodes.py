@@ -10,6 +10,7 @@ See docs/ir.md for the invariants.
 from __future__ import annotations
 
 import functools
+from collections.abc import Callable
 from dataclasses import MISSING, dataclass, field, fields
 from typing import Any, Literal, TypeVar
 
@@ -396,13 +397,28 @@ class Probe:
     kind: Literal["element", "transition"] = "element"
 
 
+@dataclass(frozen=True, slots=True, eq=False)
+class Filled:
+    """The template of a network shape (ir/ld_templates.py) that networks were filled in from, for the code
+    generator to reuse that knowledge (engine/codegen/templates.py). The blocks of one ``Filled`` hold the same
+    statements but for their networks' variables (each a local slot of the POU, none named like another variable
+    of the statements), which appear in the same places (as themselves or with members: ``T1.Q``), and for the
+    origins and probe names: every other value is the same object in all of them. ``variables(statements)``: a
+    block's variables as it holds them, each at its first place as itself (else with its first member), in an
+    order that is the same for every block."""
+
+    variables: Callable[[list[Stmt]], tuple[Var, ...]]
+
+
 @dataclass(slots=True)
 class Block:
-    """One network (LD/FBD) or the whole body (ST); ``label`` is its jump target, if any."""
+    """One network (LD/FBD) or the whole body (ST); ``label`` is its jump target, if any; ``filled``: the template
+    it was filled in from, if it was (its statements left as filled)."""
 
     statements: list[Stmt]
     origin: Origin
     label: str | None = None
+    filled: Filled | None = field(default=None, repr=False, compare=False)
 
 
 Stmt = Assign | If | Case | For | While | Repeat | Exit | Continue | Return | FbCall | FnCall | Jump | Probe

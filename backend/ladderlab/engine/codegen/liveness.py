@@ -21,36 +21,94 @@ self.v_A0`` followed by ``ll_t___P_1 = (ll_t___P and (not self.v_B0))``, which r
 dead. ``Statements`` then reads the value in its place and skips the store (a store and a load of a local: a
 plain LD network costs ~15 % less). Exact: the value cannot fault or call, and nothing runs between the store and
 the read but that next statement, which cannot call anything before the read either (see ``_fold``).
+
+A network the LD lowering filled in from a template (``ir.Block.filled``) differs from the template's other
+networks only in variables that are no temporaries: given the same temporaries live after it, its dead stores,
+folds and the temporaries live before it are those the first of them had (``_Known``), found without the pass.
 """
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 from ...ir import nodes as ir
-from .mentions import expression_nodes, walk
+from .mentions import expression_nodes, walk, walk_filled
 
 #: Operators whose result is computed without a call that could fault (boolean logic and comparisons).
 _PURE_OPERATORS = frozenset({"AND", "OR", "XOR", "AND_THEN", "OR_ELSE", "EQ", "NE", "LT", "LE", "GT", "GE"})
 
 
 def dead_stores(
-    blocks: list[ir.Block], temps: frozenset[str], live_out: frozenset[str], probes: bool
+    blocks: list[ir.Block],
+    temps: frozenset[str],
+    live_out: frozenset[str],
+    probes: bool,
+    filled: dict[int, tuple[frozenset[str], list[ir.Stmt]]] | None = None,
 ) -> tuple[set[int], dict[int, bool]]:
     """``id()`` of the statements of ``blocks`` whose store into a temporary (upper-case names ``temps``) is dead:
     an ``Assign`` to leave out, or an ``FnCall`` / ``FbCall`` whose ENO store to leave out; and the ``folds``:
     ``id()`` of the assignments to a temporary that only the next statement reads, mapped to whether that
     statement is an assignment reading it once (where a variable's read may take the temporary's place; other
     statements may take only a local's or a constant's). ``live_out``: the temporaries read after the blocks;
-    ``probes``: the code records probes where a network is viewed."""
+    ``probes``: the code records probes where a network is viewed. ``filled`` gets, by ``id()``, each network
+    filled in from a template whose dead stores and folds are those of the first of its template with the same
+    temporaries live after it (``_Known``): those temporaries and its statements in ``walk_filled``'s order."""
     dead: set[int] = set()
     folds: dict[int, bool] = {}
     if not temps:
         return dead, folds
     live = set(live_out)
+    known: dict[tuple[object, frozenset[str]], _Known] = {}
     for block in reversed(blocks):
-        live = _backward(block.statements, live, temps, dead, folds)
-        if probes:
-            live |= _exposed_probe_reads(block.statements, temps)
+        template = block.filled
+        if template is None or any([var.name in temps for var in template.variables(block.statements)]):
+            live = _block(block, live, temps, probes, dead, folds)
+            continue
+        after = frozenset(live)
+        key = (template, after)
+        found = known.get(key)
+        walked = walk_filled(block.statements, [])
+        if filled is not None:
+            filled[id(block)] = (after, walked)
+        if found is None:
+            own_dead: set[int] = set()
+            own_folds: dict[int, bool] = {}
+            live = _block(block, live, temps, probes, own_dead, own_folds)
+            dead |= own_dead
+            folds.update(own_folds)
+            position = {id(s): i for i, s in enumerate(walked)}
+            known[key] = _Known(
+                frozenset(live),
+                [position[s] for s in own_dead],
+                [(position[s], once) for s, once in own_folds.items()],
+            )
+        else:
+            live = set(found.live)
+            dead.update([id(walked[i]) for i in found.dead])
+            folds.update([(id(walked[i]), once) for i, once in found.folds])
     return dead, folds
+
+
+@dataclass(slots=True)
+class _Known:
+    """What the pass found for a network filled in from a lowering template (``ir.Filled``) given the temporaries
+    live after it: the same for every network of that template whose variables are no temporaries (they differ
+    from the template's first network in nothing else the pass reads). The statements by their position in
+    ``walk_filled``'s order."""
+
+    live: frozenset[str]  # before the network
+    dead: list[int]
+    folds: list[tuple[int, bool]]
+
+
+def _block(
+    block: ir.Block, live: set[str], temps: frozenset[str], probes: bool, dead: set[int], folds: dict[int, bool]
+) -> set[str]:
+    """The temporaries live before ``block`` given those live after it (``dead_stores``)."""
+    live = _backward(block.statements, live, temps, dead, folds)
+    if probes:
+        live |= _exposed_probe_reads(block.statements, temps)
+    return live
 
 
 def _backward(

@@ -87,11 +87,16 @@ class Statements:
         #: id() of the stores into a temporary local only the next statement reads (liveness.py, ``_fold``), mapped
         #: to whether a variable's read may replace it there; where no probe is recorded
         self.folds: dict[int, bool] = {}
+        #: id() of the networks filled in from a lowering template whose liveness is their template's for the
+        #: temporaries live after them (liveness.py, ``_Known``): those temporaries and their statements walked
+        self.filled_liveness: dict[int, tuple[frozenset[str], list[ir.Stmt]]] = {}
         self.temps = frozenset(scope.temp_locals.values())  # the temporaries' locals
         if scope.temp_locals and not self.debug:
             temps = frozenset(scope.temp_locals)
             live_out = frozenset() if plan.inline else temps  # (the next chunk takes the temporaries over)
-            self.dead, self.folds = dead_stores(plan.chunks[chunk], temps, live_out, self.module.probes)
+            self.dead, self.folds = dead_stores(
+                plan.chunks[chunk], temps, live_out, self.module.probes, self.filled_liveness
+            )
 
     # ------------------------------------------------------------------ blocks
 

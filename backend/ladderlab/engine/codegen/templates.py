@@ -17,6 +17,12 @@ module does not model (loops, jumps, returns), or a side effect of the emission 
 pages and temporaries used (a diagnostic, a bound constant, a numbered temporary, an outlined body). Only the
 fast variant, which records no probe, is filled in (tests/engine/test_block_templates.py compares the module,
 its line origins and its origins with those of the plain emission).
+
+A network the LD lowering filled in from a template of its own (``ir.Block.filled``) is not walked for its shape:
+the lowering's networks of one template differ only in their variables (and origins and probe names), so its shape
+is that of the first of them whose variables have the same types and pages and whose statements have the same
+dead stores, folds and stored inputs (``_Filled``, ``_Twin``; tests/engine/test_filled_networks.py compares the
+code with that of the same IR without ``filled``).
 """
 
 from __future__ import annotations
@@ -27,6 +33,7 @@ from typing import TYPE_CHECKING, Any
 
 from ...ir import nodes as ir
 from ...ir.nodes import node_fields
+from .mentions import walk_filled
 
 if TYPE_CHECKING:
     from .statements import Statements
@@ -51,27 +58,105 @@ class _Template:
     pages: frozenset[int]
 
 
+@dataclass(slots=True)
+class _Twin:
+    """What the first network filled in from a lowering template found (``BlockTemplates.emit``): the template of
+    its shape (None: emitted as usual) and its codes in the template's order, each the position of one of the
+    network's variables (``ir.Filled.variables``) or the code of another variable of its statements."""
+
+    template: _Template | None
+    codes: list[str | int]
+
+
 class BlockTemplates:
     """The templates of one POU's network shapes (one per generated POU: its scope fixes the codes' forms)."""
 
     def __init__(self) -> None:
         self._found: dict[tuple, _Template | None] = {}  # None: a shape that is emitted as usual
+        self._twins: dict[tuple[Any, ...], _Twin] = {}  # by a filled network's template and what its shape adds to it
 
     def emit(self, st: Statements, block: ir.Block, own_group: bool) -> None:
-        """``st.statements(block.statements, own_group)``, from the block's template where there is one."""
+        """``st.statements(block.statements, own_group)``, from the block's template where there is one. A network
+        the lowering filled in from a template of its own (``block.filled``) has the shape of the first network
+        filled from that template whose variables have the same pages and types and whose statements the same
+        liveness and stored inputs (``_Filled``): its shape is not computed again."""
+        filled = _Filled.of(st, block) if block.filled is not None else None
+        if filled is None:
+            self._emit(st, block, own_group)
+            return
+        key = (st.src.depth, st.blocks, own_group, block.filled, filled.key)
+        twin = self._twins.get(key)
+        if twin is None:
+            self._twins[key] = self._emit(st, block, own_group, filled.codes)
+        elif twin.template is None:
+            st.statements(block.statements, own_group=own_group)
+        else:
+            codes = filled.codes
+            _fill(
+                st,
+                twin.template,
+                [code if isinstance(code, str) else codes[code] for code in twin.codes],
+                filled.walked,
+            )
+
+    def _emit(self, st: Statements, block: ir.Block, own_group: bool, variables: list[str] | None = None) -> _Twin:
+        """``emit`` by the block's shape; what it found, for the twins of a filled network (``variables``: the codes
+        of its variables)."""
         shape = _Shape(st)
         try:
             key = (st.src.depth, st.blocks, own_group, shape.statements(block.statements))
             template = self._found.get(key, False)
         except (_Unshaped, TypeError):  # (TypeError: an unhashable field)
             st.statements(block.statements, own_group=own_group)
-            return
+            return _Twin(None, [])
         if isinstance(template, _Template):
-            _fill(st, template, shape)
+            _fill(st, template, list(shape.codes), shape.walked)
         elif template is None:
             st.statements(block.statements, own_group=own_group)
         else:  # a new shape: emit it and learn it
-            self._found[key] = _learn(st, block, own_group, shape)
+            template = self._found[key] = _learn(st, block, own_group, shape)
+        if variables is None:
+            return _Twin(template, [])
+        position = {code: i for i, code in enumerate(variables)}
+        return _Twin(template, [position.get(code, code) for code in shape.codes])
+
+
+@dataclass(slots=True)
+class _Filled:
+    """A network filled in from a lowering template (``ir.Filled``): what its shape (``_Shape``) holds besides the
+    template (``key``: its variables' types and pages, its statements' liveness and stored inputs), its variables'
+    codes and its statements in ``_Shape``'s order."""
+
+    key: tuple[Any, ...]
+    codes: list[str]
+    walked: list[ir.Stmt]
+
+    @staticmethod
+    def of(st: Statements, block: ir.Block) -> _Filled | None:
+        """None when a variable is not a slot of the POU named plainly (its shape is computed: ``_Shape.var``)."""
+        place = st.scope.placed
+        facts: list[tuple[int, int, int]] = []
+        codes: list[str] = []
+        for var in block.filled.variables(block.statements):  # type: ignore[union-attr]
+            code, ty, page = place(var)
+            if not (page or code.startswith("self.v_")) or code.startswith("v_w", code.find(".") + 1):
+                return None  # (not a slot of this POU, or an escaped name: ``_Shape.var``)
+            facts.append((id(var.type), id(ty), page))
+            codes.append(code)
+        if len(set(codes)) != len(codes):
+            return None
+        once = st.stored_once
+        liveness = st.filled_liveness.get(id(block))
+        if liveness is not None:  # its dead stores and folds: its template's for the temporaries live after it
+            after, walked = liveness
+            flags: tuple[Any, ...] = (after, tuple([once(s) for s in walked if type(s) is ir.FbCall]))
+        else:
+            walked = walk_filled(block.statements, [])  # (``_Shape``'s order)
+            dead, folds = st.dead, st.folds
+            flags = tuple(
+                [(id(s) in dead, folds.get(id(s)), once(s) if type(s) is ir.FbCall else None) for s in walked]
+            )
+        return _Filled((tuple(facts), flags), codes, walked)
 
 
 def _learn(st: Statements, block: ir.Block, own_group: bool, shape: _Shape) -> _Template | None:
@@ -136,14 +221,13 @@ def _holes(lines: list[str], shape: _Shape) -> list[tuple[str | int, ...]] | Non
     return template
 
 
-def _fill(st: Statements, template: _Template, shape: _Shape) -> None:
-    """The template's lines with this block's variables, its statements' origins registered in order."""
+def _fill(st: Statements, template: _Template, codes: list[str], walked: list[ir.Stmt]) -> None:
+    """The template's lines with this block's variables' ``codes``, its statements' origins registered in order
+    (``walked``: its statements in ``_Shape``'s order)."""
     src, module, scope = st.src, st.module, st.scope
-    codes = list(shape.codes)
     outer = src.origin
     for parts in template.lines:
         src.lines.append("".join(part if isinstance(part, str) else codes[part] for part in parts))
-    walked = shape.walked
     oids = [module.origin(walked[i].origin, walked[i]) for i in template.statements]
     src.line_origins.extend(outer if k < 0 else oids[k] for k in template.origins)
     scope.temps_used |= template.temps
