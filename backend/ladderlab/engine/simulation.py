@@ -842,8 +842,11 @@ class Simulation:
         self._viewed = None if viewed is None else {key.strip().upper(): ids for key, ids in viewed.items()}
         self._unsilence()  # (the flags set are the real ones; the next quiet scan silences them again)
         self._mutes = None
+        tables = self.compiled.generated.context.probe_tables
+        if not any(table.networks for table in tables.values()):
+            return  # no network records anything (the fast variant): no instance to walk (50,000 networks: ~0.1 s)
         for key, (obj, pou) in self._instances_by_path().items():
-            table = self._context_probes(pou)
+            table = tables.get(pou.upper())
             if table is None or not table.networks:
                 continue
             ids = None if self._viewed is None else self._viewed.get(key, ())

@@ -12,6 +12,7 @@ costs one test of an empty set.
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Callable, Iterable
 
 from .codegen.context import ModuleContext
@@ -21,21 +22,29 @@ from .paths import Location
 
 class StoredOnce:
     def __init__(self, context: ModuleContext) -> None:
-        pins = context.constant_pins
-        #: program instance (upper case) -> its instances' (slot place, ((PIN, value), ...)) pairs
-        self._programs: dict[str, list[tuple[Place, tuple[tuple[str, object], ...]]]] = {
-            i.name.upper(): [(_place(context, i.pou, slot), held) for slot, held in pins[i.pou.upper()].items()]
-            for i in context.instances
-            if i.pou.upper() in pins
-        }
-        self._pins = {
-            (i, place.slot.name.upper(), pin) for i, held in self._programs.items() for place, h in held for pin, _ in h
-        }
+        self._context = context
         #: the program instances whose pins an online change may have left without their constants
         self.stale: set[str] = set()
         #: those with an injected fault on a pin (applied before each scan, as a force is): restored after the
         #: scan too, where IEC's call stored the constant over the faulted value
         self.faulted: set[str] = set()
+
+    @functools.cached_property
+    def _programs(self) -> dict[str, list[tuple[Place, tuple[tuple[str, object], ...]]]]:
+        """Program instance (upper case) -> its instances' (slot place, ((PIN, value), ...)) pairs: worked out at the
+        first online change, not when every simulation starts (50,000 networks: ~0.05 s)."""
+        context, pins = self._context, self._context.constant_pins
+        return {
+            i.name.upper(): [(_place(context, i.pou, slot), held) for slot, held in pins[i.pou.upper()].items()]
+            for i in context.instances
+            if i.pou.upper() in pins
+        }
+
+    @functools.cached_property
+    def _pins(self) -> set[tuple[str, str, str]]:
+        return {
+            (i, place.slot.name.upper(), pin) for i, held in self._programs.items() for place, h in held for pin, _ in h
+        }
 
     def touched(self, location: Location | None) -> None:
         """An online write, force or release of ``location`` (None: of anything, a release of every force)."""
