@@ -137,7 +137,9 @@ class _Filled:
         place = st.scope.placed
         facts: list[tuple[int, int, int]] = []
         codes: list[str] = []
-        for var in block.filled.variables(block.statements):  # type: ignore[union-attr]
+        filled = block.filled
+        assert filled is not None  # (asked only of filled networks)
+        for var in filled.variables(block.statements):
             code, ty, page = place(var)
             if not (page or code.startswith("self.v_")) or code.startswith("v_w", code.find(".") + 1):
                 return None  # (not a slot of this POU, or an escaped name: ``_Shape.var``)
