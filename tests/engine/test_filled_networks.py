@@ -20,11 +20,10 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from ladderlab.engine.codegen import chunks, generate
-from ladderlab.engine.codegen.layout import PAGE_SIZE
 from ladderlab.ir import nodes as ir
 from ladderlab.ir.lower_project import lower_project
-from ladderlab.model import ld
-from ladderlab.model.project import Pou, Project, Task
+from ladderlab.model.project import Project
+from tests.engine.test_block_templates import _project  # (the same program of LD networks)
 
 #: the pools the variables rotate in: the last BOOLs live on the second page of slots
 BOOLS = ["B0", "B1", "B2", "P0", "P1"]
@@ -52,41 +51,6 @@ def _rotated(spec: tuple[str, str, str], turn: int) -> tuple[str, str, str]:
 
     kind, a, b = spec
     return kind, rotate(a), b if kind in ("contact", "coil") else rotate(b)
-
-
-def _element(n: int, k: int, spec: tuple[str, str, str]) -> ld.LdElement:
-    kind, a, b = spec
-    ident = f"e{n}_{k}"
-    if kind == "contact":
-        return ld.Contact(id=ident, var=a, mode=b)  # type: ignore[arg-type]
-    if kind == "coil":
-        return ld.Coil(id=ident, var=a, mode=b)  # type: ignore[arg-type]
-    if kind == "compare":
-        return ld.Compare(id=ident, op="LT", left=a, right=b)
-    if kind == "ton":
-        return ld.Box(id=ident, call="TON", instance=a, inputs={"PT": b})
-    return ld.Box(id=ident, call="ADD", en=True, inputs={"IN1": a, "IN2": b}, outputs={"OUT": a})
-
-
-def _project(networks: list[list[tuple[str, str, str]]]) -> Project:
-    filler = " ".join(f"F{i}," for i in range(PAGE_SIZE))  # P0 and P1 on the second page of slots
-    declarations = (
-        f"VAR\n  B0, B1, B2 : BOOL; I0, I1 : INT; T0, T1 : TON;\n  {filler} P0, P1 : BOOL;\nEND_VAR\n"
-        "VAR_EXTERNAL G1 : BOOL; END_VAR"
-    )
-    body = ld.LdBody(
-        networks=[
-            ld.LdNetwork(id=f"n{n}", elements=[_element(n, k, spec) for k, spec in enumerate(elements)])
-            for n, elements in enumerate(networks)
-        ]
-    )
-    main = Pou(name="Main", kind="program", language="ld", declarations=declarations, body=body)
-    return Project(
-        name="filled",
-        pous=[main],
-        globals="VAR_GLOBAL G1 : BOOL; END_VAR",
-        tasks=[Task(name="main", interval="T#10ms", programs=["Main"])],
-    )
 
 
 def _same_without_filled(project: Project, variants: tuple[str, ...] = ("fast", "monitor")) -> list[ir.Block]:
