@@ -74,3 +74,25 @@ def line_of(text: str, statement: str) -> int:
     """The line of ``text`` on which ``statement`` stands, a whole line written in one place only."""
     (line,) = [number for number, row in enumerate(text.splitlines(), 1) if row == statement]
     return line
+
+
+def ld_shapes_project(declarations: str, networks: list[list[object]], element) -> object:
+    """A project whose program Main (declaring ``declarations``, with the global G1) holds one LD network per entry
+    of ``networks``, each element made by ``element(network number, element number, spec)``: the repeated-shape
+    programs of the template tests (tests/engine/test_block_templates.py, tests/ir/test_ld_templates.py)."""
+    from ladderlab.model import ld
+    from ladderlab.model.project import Pou, Project, Task
+
+    body = ld.LdBody(
+        networks=[
+            ld.LdNetwork(id=f"n{n}", elements=[element(n, k, spec) for k, spec in enumerate(elements)])
+            for n, elements in enumerate(networks)
+        ]
+    )
+    main = Pou(name="Main", kind="program", language="ld", declarations=declarations, body=body)
+    return Project(
+        name="shapes",
+        pous=[main],
+        globals="VAR_GLOBAL G1 : BOOL; END_VAR",
+        tasks=[Task(name="main", interval="T#10ms", programs=["Main"])],
+    )

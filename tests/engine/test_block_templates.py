@@ -22,7 +22,8 @@ from ladderlab.engine.codegen.layout import PAGE_SIZE
 from ladderlab.ir import nodes as ir
 from ladderlab.ir.lower_project import lower_project
 from ladderlab.model import ld
-from ladderlab.model.project import Pou, Project, Task
+from ladderlab.model.project import Project
+from tests.support import ld_shapes_project
 
 BOOLS = [f"B{i}" for i in range(4)]
 
@@ -74,19 +75,7 @@ def _project(networks: list[list[tuple[str, str, str]]]) -> Project:
         f"VAR\n  {', '.join(BOOLS)} : BOOL; I0, I1 : INT; T0, T1 : TON;\n  {filler} P0, P1 : BOOL;\nEND_VAR\n"
         "VAR_EXTERNAL G1 : BOOL; END_VAR"
     )
-    body = ld.LdBody(
-        networks=[
-            ld.LdNetwork(id=f"n{n}", elements=[_element(n, k, spec) for k, spec in enumerate(elements)])
-            for n, elements in enumerate(networks)
-        ]
-    )
-    main = Pou(name="Main", kind="program", language="ld", declarations=declarations, body=body)
-    return Project(
-        name="shapes",
-        pous=[main],
-        globals="VAR_GLOBAL G1 : BOOL; END_VAR",
-        tasks=[Task(name="main", interval="T#10ms", programs=["Main"])],
-    )
+    return ld_shapes_project(declarations, networks, _element)
 
 
 @settings(max_examples=int(os.environ.get("TEMPLATE_EXAMPLES", "25")), deadline=None)

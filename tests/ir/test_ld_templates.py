@@ -22,6 +22,7 @@ from ladderlab.ir import ld_templates
 from ladderlab.ir.lower_project import LoweringResult, lower_project
 from ladderlab.model import ld
 from ladderlab.model.project import Pou, Project, Task
+from tests.support import ld_shapes_project
 
 BOOLS = ["B0", "B1", "B2", "B3"]
 
@@ -110,19 +111,7 @@ def _project(networks: list[list[tuple[str, str, str]]]) -> Project:
         f"VAR\n  {', '.join(BOOLS)} : BOOL; I0, I1 : INT; T0, T1 : TON;\nEND_VAR\n"
         "VAR CONSTANT K1 : BOOL := TRUE; K2 : INT := 3; END_VAR\nVAR_EXTERNAL G1 : BOOL; END_VAR"
     )
-    body = ld.LdBody(
-        networks=[
-            ld.LdNetwork(id=f"n{n}", elements=[_element(n, k, spec) for k, spec in enumerate(elements)])
-            for n, elements in enumerate(networks)
-        ]
-    )
-    main = Pou(name="Main", kind="program", language="ld", declarations=declarations, body=body)
-    return Project(
-        name="shapes",
-        pous=[main],
-        globals="VAR_GLOBAL G1 : BOOL; END_VAR",
-        tasks=[Task(name="main", interval="T#10ms", programs=["Main"])],
-    )
+    return ld_shapes_project(declarations, networks, _element)
 
 
 @settings(max_examples=int(os.environ.get("TEMPLATE_EXAMPLES", "30")), deadline=None)
