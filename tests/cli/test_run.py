@@ -87,6 +87,80 @@ def test_for_runs_every_scan_due_within_the_duration_and_strings_print_as_string
     ]
 
 
+LIGHTS = """TYPE TLight : (Red, Yellow, Green := 5); END_TYPE
+TYPE TLamp : STRUCT colour : TLight; lit : BOOL; END_STRUCT END_TYPE
+FUNCTION_BLOCK Signal
+VAR_OUTPUT shown : TLight; END_VAR
+shown := Yellow;
+END_FUNCTION_BLOCK
+PROGRAM Main
+VAR
+  go : BOOL;
+  light : TLight;
+  lamp : TLamp;
+  row : ARRAY[1..2] OF TLight;
+  signal : Signal;
+END_VAR
+signal();
+IF go THEN light := Green; ELSE light := Red; END_IF;
+lamp.colour := light;
+row[2] := signal.shown;
+END_PROGRAM
+"""
+
+
+def test_enumerations_print_as_their_declared_literals_also_inside_structures_arrays_and_instances(capsys, tmp_path):
+    """An enumeration's value reads as ``TLIGHT#Green`` (its type, upper case as every name the CLI prints, and the
+    value's name as declared: how `ladderlab test` reports print it), not as the number the engine stores, wherever
+    it stands in a watched value; a --set takes the same literal."""
+    code, out, err = run(
+        capsys,
+        tmp_path,
+        LIGHTS,
+        "--cycles",
+        "2",
+        "--set",
+        "Main.go=TRUE@1",
+        "--watch",
+        "Main.light",
+        "--watch",
+        "Main.lamp",
+        "--watch",
+        "Main.row",
+        "--watch",
+        "Main.signal",
+        "--format",
+        "jsonl",
+    )
+    assert (code, err) == (0, "")
+    rows = [json.loads(line) for line in out.splitlines()]
+    assert rows == [
+        {
+            "scan": 0,
+            "time_ms": 10,
+            "Main.light": "TLIGHT#Red",
+            "Main.lamp": {"COLOUR": "TLIGHT#Red", "LIT": False},
+            "Main.row": ["TLIGHT#Red", "TLIGHT#Yellow"],
+            "Main.signal": {"SHOWN": "TLIGHT#Yellow"},
+        },
+        {
+            "scan": 1,
+            "time_ms": 20,
+            "Main.light": "TLIGHT#Green",
+            "Main.lamp": {"COLOUR": "TLIGHT#Green", "LIT": False},
+            "Main.row": ["TLIGHT#Red", "TLIGHT#Yellow"],
+            "Main.signal": {"SHOWN": "TLIGHT#Yellow"},
+        },
+    ]
+    code, out, _ = run(
+        capsys, tmp_path, LIGHTS, "--cycles", "1", "--set", "Main.row[1]=TLight#Green", "--watch", "Main.row"
+    )
+    assert (code, out.splitlines()) == (
+        0,
+        ["scan  time_ms  Main.row", '0     10       ["TLIGHT#Green", "TLIGHT#Yellow"]'],
+    )
+
+
 def test_table_format_has_a_header_and_aligned_rows(capsys, tmp_path):
     code, out, _ = run(capsys, tmp_path, TIMER, "--cycles", "2", "--watch", "Main.n", "--watch", "Main.lamp")
     assert code == 0

@@ -106,7 +106,7 @@ def run_scans(
         sim.location(path)
     writes = [Scheduled(s.scan, InputEvent("write", s.path, _typed_text(sim, s), source="cli")) for s in sets]
     for scan in scan_inputs(sim, [*writes, *events], cycles=cycles, for_ms=for_ms):
-        yield Row(scan, sim.time_ms, {path: sim.read(path) for path in watch})
+        yield Row(scan, sim.time_ms, {path: sim.read(path, enum_literals=True) for path in watch})
         if sim.fault is not None or (until is not None and until.holds(sim)):
             return
 
@@ -121,7 +121,8 @@ def _typed_text(sim: Simulation, action: SetAction) -> str:
 
 
 def json_value(value: object) -> object:
-    """Values as JSON: BOOL true/false, numbers, TIME/DATE as ms, strings; NaN/inf as their IEC-ish names."""
+    """Values as JSON: BOOL true/false, numbers, TIME/DATE as ms, strings, enumerations as their literals
+    (``"TCOLOR#Red"``: ``run_scans`` reads them so); NaN/inf as their IEC-ish names."""
     if isinstance(value, float) and not math.isfinite(value):
         return "NaN" if math.isnan(value) else ("inf" if value > 0 else "-inf")
     if isinstance(value, list):

@@ -662,15 +662,22 @@ def _array_leaves(context, path, ty: t.Array, value, prefix: list[int], roots=No
             yield from _value_leaves(context, f"{path}[{', '.join(map(str, indices))}]", ty.element, item, roots)
 
 
-def plain(context: ModuleContext, ty: t.IrType, value: object) -> object:
-    """A value as plain data: arrays as (nested) lists, structures and FB instances as dicts, references as text."""
+def plain(context: ModuleContext, ty: t.IrType, value: object, *, enum_literals: bool = False) -> object:
+    """A value as plain data: arrays as (nested) lists, structures and FB instances as dicts, references as text;
+    with ``enum_literals`` an enumeration's value as its literal (``TCOLOR#Red``, what the CLI prints), else its
+    number."""
     if isinstance(ty, t.Reference):
         return reference_text(value)
+    if isinstance(ty, t.Enum):
+        return ty.literal(value) if enum_literals else value
     if isinstance(ty, t.Array):
         inner = t.Array(ty.element, ty.dims[1:]) if len(ty.dims) > 1 else ty.element
-        return [plain(context, inner, item) for item in value]  # type: ignore[attr-defined]
+        return [plain(context, inner, item, enum_literals=enum_literals) for item in value]  # type: ignore[attr-defined]
     if isinstance(ty, t.Struct):
-        return {f.name: plain(context, f.type, getattr(value, names.slot(f.name))) for f in ty.fields}
+        return {
+            f.name: plain(context, f.type, getattr(value, names.slot(f.name)), enum_literals=enum_literals)
+            for f in ty.fields
+        }
     if isinstance(ty, t.FbInstance):
         user = context.user_fb(ty.fb)
         if user is None:
@@ -682,7 +689,9 @@ def plain(context: ModuleContext, ty: t.IrType, value: object) -> object:
             if place.slot.hidden or place.slot.var_class == "VAR_IN_OUT":
                 continue
             owner = value if place.page == 0 else getattr(value, f"ll_p{place.page}")
-            result[place.slot.name] = plain(context, place.slot.type, getattr(owner, place.attr))
+            result[place.slot.name] = plain(
+                context, place.slot.type, getattr(owner, place.attr), enum_literals=enum_literals
+            )
         return result
     return value
 

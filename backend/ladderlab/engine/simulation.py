@@ -1042,10 +1042,11 @@ class Simulation:
         """A reader of many resolved locations at once (the online monitor's frames); valid across resets."""
         return LocationReader(locations, self._roots, self._context)
 
-    def read(self, path: str) -> object:
-        """Current value (arrays as lists, structures and FB instances as dicts)."""
+    def read(self, path: str, *, enum_literals: bool = False) -> object:
+        """Current value (arrays as lists, structures and FB instances as dicts; ``enum_literals``: enumerations
+        as ``TCOLOR#Red``, else numbers)."""
         location = self._resolver.resolve(path)
-        return plain(self._context, location.type, location.get(self._roots))
+        return plain(self._context, location.type, location.get(self._roots), enum_literals=enum_literals)
 
     def write(self, path: str, value: object) -> None:
         """Write once, before the next scan (at once while halted); the program may overwrite it."""

@@ -50,6 +50,12 @@ class Enum:
     values: tuple[tuple[str, int], ...]
     base: str = "INT"
 
+    def literal(self, value: object) -> str:
+        """``TCOLOR#Red``: the value as its IEC literal, the name spelled as declared (``TCOLOR#7`` for a number
+        no name has, which an online write of a plain number can leave)."""
+        name = next((n for n, number in self.values if number == value), None)
+        return f"{self.name}#{name if name is not None else value}"
+
 
 @dataclass(frozen=True)
 class Array:

@@ -11,8 +11,7 @@ def literal(value: object, ty: t.IrType) -> str:
     """``5``, ``2.5``, ``TRUE``, ``T#1s500ms``, ``'text'``, ``TCOLOR#Red`` (an enumeration's value as declared): the
     value as IEC text."""
     if isinstance(ty, t.Enum):
-        name = next((n for n, number in ty.values if number == value), None)
-        return f"{ty.name}#{name}" if name is not None else f"{ty.name}#{value}"
+        return ty.literal(value)
     if isinstance(ty, t.Subrange):
         ty = ty.base
     if isinstance(ty, t.Elementary):
