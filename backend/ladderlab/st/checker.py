@@ -550,9 +550,9 @@ class ProjectChecker:
                 if name.address:
                     self._check_address(block, name, ty, pou, report)
                 key = (name.name or name.address or "").upper()
-                if key in table:
-                    written = name.name or name.address or ""
-                    report("ST-DUPLICATE", f"'{written}' is declared twice" + (twice(key) if twice else ""), name)
+                if key in table:  # (its text: ``written`` is the declaration's FB_init arguments, for every name)
+                    text = name.name or name.address or ""
+                    report("ST-DUPLICATE", f"'{text}' is declared twice" + (twice(key) if twice else ""), name)
                     continue
                 symbol = Symbol(
                     name.name or name.address,
