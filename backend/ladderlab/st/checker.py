@@ -536,10 +536,17 @@ class ProjectChecker:
         ``twice(name)`` adds to the message of a name declared twice."""
         report = checker.report
         constant, retain, owner = block.constant, block.retain, pou.name if pou else None  # (once, not per name)
+        blocks = project_blocks(self.result.pous)
         for decl in block.decls:
-            spec, written = instance_spec(decl.type, project_blocks(self.result.pous))
-            ty = self.resolve(spec, checker)
-            self._check_decl(block, decl, ty, pou, report)
+            spec = decl.type
+            if type(spec) is ast.NamedType:  # most declarations: a type by its name (no FB_init arguments in it)
+                written, ty = None, self._named(spec, report)
+            else:
+                spec, written = instance_spec(spec, blocks)
+                ty = self.resolve(spec, checker)
+            plain = _nothing_to_check(ty, decl, written, constant)
+            if not plain:
+                self._check_decl(block, decl, ty, pou, report)
             init = decl.init
             if init is None and isinstance(spec, ast.NamedType):
                 typedef = self.result.types.get(spec.name.upper())
@@ -569,7 +576,7 @@ class ProjectChecker:
                     owner,
                 )
                 table[key] = symbol
-                if record:
+                if record and not plain:
                     self._written_args.append((symbol, written, decl.type, checker, pou))
                     if self._args_checked:  # a test file's variables, declared after the project's check
                         self._check_written(*self._written_args.pop(), late=True)
@@ -728,6 +735,14 @@ def _pack(decl: ast.TypeDecl, resolved: Type, report: Reporter) -> None:
 def _redefinable(name: str) -> bool:
     """Whether a project's own POU may be named like this standard function (and is called instead of it)."""
     return name in stdlib.REDEFINABLE or (t.codesys_typing() and name in stdlib.CODESYS_REDEFINABLE)
+
+
+def _nothing_to_check(ty: Type, decl: ast.VarDecl, written: list | None, constant: bool) -> bool:
+    """Whether ``decl``'s variables (of type ``ty``, FB_init arguments ``written``, in a CONSTANT block or not) are
+    ones ``_check_decl`` and ``_check_written`` find nothing to say about: elementary, without an edge, an initial
+    value, CONSTANT or arguments. Most of a large program's are (issue 27: 200,000 variables looked at again for
+    nothing; tests/st/test_declaration_checks.py compares with checking them all)."""
+    return type(ty) is t.Elementary and written is None and not decl.edge and decl.init is None and not constant
 
 
 def _elementary_decl(decl: ast.VarDecl) -> bool:
