@@ -79,7 +79,7 @@ class _Shape:
         self._kinds: list[tuple[Any, ...]] = []
         self.texts: list[str] = []  # the operands kept as their text
         elements = self.series(network.elements)
-        if len(set(self.ids)) != len(self.ids) or any("." in ident for ident in self.ids):
+        if len(set(self.ids)) != len(self.ids) or "." in "".join(self.ids):  # (no element id with a dot)
             raise _Plain
         self.key = (tuple(self._kinds), elements)
 

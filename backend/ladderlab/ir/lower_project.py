@@ -176,9 +176,10 @@ def lower_pou(
     ctx = PouContext(checked, info, diagnostics, image)
     if base is not None:
         ctx.reserve(base.slots)
+    file = f"{info.name}/declarations"
     for symbol in info.symbols.values():
         if symbol.var_class != "VAR_EXTERNAL":
-            slot = _slot(symbol, ctx, f"{info.name}/declarations")
+            slot = _slot(symbol, ctx, file)
             if slot is not None:
                 ctx.add_slot(slot)
     for slot in monitored_slots(info, ctx):
