@@ -7,6 +7,8 @@ functions.
 
 from __future__ import annotations
 
+import re
+
 import pytest
 from hypothesis import given
 from hypothesis import strategies as st
@@ -97,3 +99,23 @@ def test_only_plain_elementary_declarations_are_left_unchecked(monkeypatch: pyte
     declarations = "VAR a, b : BOOL; c : INT := 1; d : Plain; e : BOOL R_EDGE; END_VAR VAR CONSTANT k : INT; END_VAR"
     _checked(LIBRARY + f"PROGRAM Main\n{declarations}\n;\nEND_PROGRAM\n")
     assert {name: answers[name] for name in "acdek"} == {"a": True, "c": False, "d": False, "e": False, "k": False}
+
+
+@fuzz_settings(200)
+@given(
+    st.text(alphabet="aZq09_", max_size=70)
+    | st.sampled_from(["IF", "int", "Time", "x__y", "end_", "_a", "a" * 64, "a" * 65, "A1" * 32, "é", "a\n"])
+)
+def test_plain_names_get_the_full_identifier_check_s_verdict(name):
+    """``check_identifier`` leaves plain names (letters and digits) to the keyword check alone: the same reports as
+    the full check (LEX-13, LEX-15, KW-02)."""
+
+    def reports(checking) -> list[tuple]:
+        found: list[tuple] = []
+        checking(name, None, lambda *args, **kwargs: found.append((args, kwargs)))
+        return found
+
+    quick = reports(checker.check_identifier)
+    with pytest.MonkeyPatch.context() as patched:
+        patched.setattr(checker, "_PLAIN_NAME", re.compile(r"(?!)"))  # matches nothing: every name checked fully
+        assert quick == reports(checker.check_identifier)

@@ -8,6 +8,7 @@ consumes (``CheckResult``); problems are ``Diagnostic``s, never exceptions.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable
 from functools import partial
 from typing import Any
@@ -17,7 +18,7 @@ from ..iec.addresses import incomplete, parse_address, type_problem
 from ..iec.spelling import did_you_mean
 from ..iec.values import article
 from ..model.diagnostics import Diagnostic
-from ..model.names import pou_name_problem
+from ..model.names import MAX_NAME_LENGTH, pou_name_problem
 from ..model.project import Project
 from . import ast
 from . import types as t
@@ -775,13 +776,20 @@ def check_project(project: Project) -> CheckResult:
         return ProjectChecker(with_libraries(project)).run()
 
 
+#: Names of letters and digits from a letter, at most MAX_NAME_LENGTH characters: ones ``pou_name_problem`` accepts and
+#: that do not end with '_', so only the keyword check is left (most declared names; issue 27,
+#: tests/st/test_declaration_checks.py compares with the full check)
+_PLAIN_NAME = re.compile(rf"[A-Za-z][A-Za-z0-9]{{0,{MAX_NAME_LENGTH - 1}}}\Z")
+
+
 def check_identifier(name: str, node: Any, report: Reporter) -> None:
     """A declared name: not a keyword or type name (KW-01, KW-02), no two '_' in a row, at most 64 characters
     (LEX-13, LEX-15); a trailing '_' only warns (IEC ed. 2 forbids it)."""
-    problem = pou_name_problem(name)
     if name.upper() in reserved_words():
         report("ST-NAME", f"'{name}' is a keyword or type name and cannot be declared as a name (KW-02)", node)
-    elif problem:
+    elif _PLAIN_NAME.match(name):
+        return
+    elif problem := pou_name_problem(name):
         report("ST-NAME", f"'{name}' is not a valid identifier: {problem}", node)
     elif name.endswith("_"):
         report(
