@@ -118,7 +118,7 @@ class _Shape:
                 if fb:
                     raise _Plain
                 self.texts.append(text)
-            return ("text", text)
+                return ("text", text)
             symbol, member = named
         if (member is not None or fb) != isinstance(symbol.type, t.FbType) or (fb and member is not None):
             raise _Plain  # (a member of an FB instance only; an instance only where one is wanted)
