@@ -331,7 +331,7 @@ class TypeLowering:
             and symbol.address is None
             and symbol.init_args is None
             and symbol.var_class != "VAR_IN_OUT"
-            and spec.name.upper() not in self.types
+            and (not self.types or spec.name.upper() not in self.types)
         ):
             lowered, initial = _elementary_slot(ty.name)
             return Slot(upper_name(symbol.name), symbol.var_class, lowered, initial, symbol.retain, symbol.constant)

@@ -19,7 +19,8 @@ import re
 from . import ast
 
 # The grammar's lexer: WS is [ \t\f\r\n], IDENT is ASCII.
-_WS = r"[ \t\f\r\n]*"
+_BLANK = " \t\f\r\n"
+_WS = rf"[{_BLANK}]*"
 _IDENT = r"[A-Za-z_][A-Za-z0-9_]*"
 _WORD = re.compile(rf"{_WS}({_IDENT})")
 _DECL = re.compile(rf"{_WS}({_IDENT}(?:{_WS},{_WS}{_IDENT})*){_WS}:{_WS}({_IDENT}){_WS};")
@@ -92,13 +93,15 @@ class _Reader:
                 decls.append(decl)
                 continue
             offset = lines[line - 1] - 1  # columns are 1-based
-            names = []
-            for name in _NAME.finditer(text, start, match.end(1)):
-                word = name.group()
+            names, first, written = [], start, match.group(1)
+            for word in written.split(",") if "," in written else (written,):
+                if len(word) != len(name := word.strip(_BLANK)):  # (blanks around it: found after them)
+                    first, word = text.index(name, first), name
                 if word.upper() in keywords:
                     return None
-                first, last = name.span()
+                last = first + len(word)
                 names.append(ast.DeclName(word, None, _SPAN(ast.Span, (line, first - offset, line, last - offset))))
+                first = last + 1  # (past the comma, or the blanks before it)
             type_name = match.group(2)
             if type_name.upper() in keywords:
                 return None
