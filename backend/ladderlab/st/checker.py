@@ -738,7 +738,7 @@ def _redefinable(name: str) -> bool:
     return name in stdlib.REDEFINABLE or (t.codesys_typing() and name in stdlib.CODESYS_REDEFINABLE)
 
 
-def _nothing_to_check(ty: Type, decl: ast.VarDecl, written: list | None, constant: bool) -> bool:
+def _nothing_to_check(ty: Type, decl: ast.VarDecl, written: list[Any] | None, constant: bool) -> bool:
     """Whether ``decl``'s variables (of type ``ty``, FB_init arguments ``written``, in a CONSTANT block or not) are
     ones ``_check_decl`` and ``_check_written`` find nothing to say about: elementary, without an edge, an initial
     value, CONSTANT or arguments. Most of a large program's are (issue 27: 200,000 variables looked at again for
