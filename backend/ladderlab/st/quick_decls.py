@@ -80,7 +80,7 @@ class _Reader:
         One loop over a block's declarations, the line followed as it goes, not searched: a 50,000-network
         program's declarations are 100,000 (issue 27)."""
         text, keywords, lines, position = self.text, self.keywords, self.lines, self.position
-        line, count = bisect.bisect_right(lines, position), len(lines)  # the line at ``position``, its number
+        line, count = bisect.bisect_right(lines, position), len(lines)  # (the line at ``position``; how many)
         decls: list[ast.VarDecl] = []
         while (match := _DECL.match(text, position)) is not None:
             start, position = match.start(1), match.end()
@@ -93,15 +93,16 @@ class _Reader:
                 decls.append(decl)
                 continue
             offset = lines[line - 1] - 1  # columns are 1-based
-            names, first, written = [], start, match.group(1)
-            for word in written.split(",") if "," in written else (written,):
-                if len(word) != len(name := word.strip(_BLANK)):  # (blanks around it: found after them)
-                    first, word = text.index(name, first), name
+            names, piece_start, written = [], start, match.group(1)
+            for piece in written.split(",") if "," in written else (written,):
+                word, first = piece.strip(_BLANK), piece_start
+                if len(word) != len(piece):  # (blanks around the name)
+                    first += piece.index(word)
                 if word.upper() in keywords:
                     return None
                 last = first + len(word)
                 names.append(ast.DeclName(word, None, _SPAN(ast.Span, (line, first - offset, line, last - offset))))
-                first = last + 1  # (past the comma, or the blanks before it)
+                piece_start += len(piece) + 1  # (past the comma)
             type_name = match.group(2)
             if type_name.upper() in keywords:
                 return None
