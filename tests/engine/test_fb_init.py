@@ -260,6 +260,8 @@ END_FUNCTION_BLOCK
         ),
         ("f : F(n := 100000);", [("ST-RANGE", 12, "100000 is out of range for INT (-32768..32767)")]),
         ("f : F(n := 1, n := 2);", [("ST-CALL-ARGS", 15, "the FB_init input n is given twice")]),
+        ("f, f, g : F(n := 1);", [("ST-DUPLICATE", 4, "'f' is declared twice")]),  # g still gets its argument
+        ("v, v, w : INT;", [("ST-DUPLICATE", 4, "'v' is declared twice")]),  # w: no FB_init arguments
         (
             "f : F(bInitRetains := TRUE, n := 1);",
             [("ST-CALL-ARGS", 7, "bInitRetains is the system's to set when the instance is initialised")],

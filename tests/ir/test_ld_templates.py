@@ -125,6 +125,15 @@ def test_networks_of_repeated_shapes_give_the_plain_lowering(
     _both(_project(networks))
 
 
+def test_a_member_of_another_instance_is_not_the_networks_own(monkeypatch: pytest.MonkeyPatch) -> None:
+    """``--| T0.Q |--[TON T1]--`` after ``--| T0.Q |--[TON T0]--``: the contact reads T0.Q, not the network's own
+    instance's Q (a member named by its text was kept as the text, its instance bound as the network's variable)."""
+    filled = _filled_networks(monkeypatch)
+    networks = [[("contact", "T0.Q", "no"), ("ton", instance, "T#5ms")] for instance in ["T0", "T0", "T1", "T0"]]
+    _both(_project(networks))
+    assert filled == ["n3"]  # (n2's contact and box name two instances, n1's one: another shape)
+
+
 def _renamed(spec: tuple[str, str, str], turn: int) -> tuple[str, str, str]:
     """The variables named plainly rotated in their pools each repetition (texts such as ``I0 + 1`` kept): later
     networks of a shape have other variables than its first."""

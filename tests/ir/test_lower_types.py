@@ -3,15 +3,17 @@
 from __future__ import annotations
 
 import pytest
-from hypothesis import given
+from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from ladderlab.iec.elementary import ELEMENTARY
 from ladderlab.iec.values import f32
 from ladderlab.ir import types as ir
-from ladderlab.ir.lower_types import LoweringError, ir_type
+from ladderlab.ir.lower_types import LoweringError, TypeLowering, ir_type
 from ladderlab.ir.types import Array, Elementary, Enum, FbInstance, Struct, StructField, Subrange
 from ladderlab.st import types as t
+from ladderlab.st.checker import check_project
+from ladderlab.st.project_text import source_to_project
 from tests.engine.helpers import date_ms, ms
 from tests.ir.helpers import BOOL, DINT, INT, REAL, STRING, TIME, errors, lower_ok
 
@@ -67,6 +69,42 @@ def test_slot_types_of_every_kind():
     assert declared["Q"].type == Subrange(INT, -5, 5)
     assert declared["F"].type == FbInstance("TON") and declared["C"].type == FbInstance("CTU_DINT")
     assert declared["W"].type == Elementary("STRING", 12)
+
+
+_SHORTCUT_TYPES = """TYPE TTimer : TON; TMotor : Motor; TPercent : INT (0..100); TCount : DINT; TInt : INT; END_TYPE
+FUNCTION_BLOCK Motor
+VAR_INPUT on : BOOL; END_VAR
+END_FUNCTION_BLOCK
+"""
+
+
+@settings(max_examples=40, deadline=None)
+@given(
+    st.lists(
+        st.sampled_from(["INT", "bool", "TON", "ctu_dint", "Motor", "TTimer", "TMotor", "TPercent", "TCount", "TInt"])
+        | st.sampled_from(sorted(ELEMENTARY)),
+        min_size=1,
+        max_size=6,
+    )
+)
+def test_the_type_shortcuts_give_the_general_ways_types_and_slots(declared):
+    """``TypeLowering.type_of``'s shortcuts (an elementary type without a TYPE, an FB instance: issue 27) and the
+    elementary slots' shared types and defaults give what ``_type_of`` and the general slot give."""
+    text = (
+        "PROGRAM P\nVAR\n" + "".join(f"v{i} : {name};\n" for i, name in enumerate(declared)) + "END_VAR\nEND_PROGRAM\n"
+    )
+    project, diagnostics = source_to_project(text + _SHORTCUT_TYPES, "test")
+    assert project is not None and not diagnostics
+    checked = check_project(project)
+    types = TypeLowering(checked, checked.pou("P"))
+    for symbol in checked.pou("P").symbols.values():
+        assert types.type_of(symbol.type, symbol.type_spec) == types._type_of(symbol.type, symbol.type_spec)
+        slot = types.slot(symbol)
+        assert (slot.type, slot.initial) == (
+            types._type_of(symbol.type, symbol.type_spec),
+            types.initial(symbol.type, symbol.type_spec, symbol.init),
+        )
+        assert type(slot.initial) is type(types.initial(symbol.type, symbol.type_spec, symbol.init))
 
 
 # ---------------------------------------------------------------- initial values (TYP-05 defaults)

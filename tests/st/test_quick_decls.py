@@ -47,8 +47,8 @@ OTHER = st.sampled_from(
 @st.composite
 def declaration(draw) -> str:
     names = draw(st.lists(NAMES, min_size=1, max_size=3))
-    gap = draw(GAP)
-    text = f",{gap}".join(names) + f"{draw(GAP)}:{draw(GAP)}{draw(TYPES)}{draw(GAP)};"
+    text = names[0] + "".join(f"{draw(GAP)},{draw(GAP)}{name}" for name in names[1:])  # (blanks on either side)
+    text += f"{draw(GAP)}:{draw(GAP)}{draw(TYPES)}{draw(GAP)};"
     return text
 
 

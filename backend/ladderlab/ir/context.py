@@ -231,6 +231,11 @@ class PouContext:
         self.slots.append(slot)
         self._taken.add(slot.name)
 
+    def add_slots(self, slots: list[Slot]) -> None:
+        """``add_slot`` for each of ``slots`` (a POU's declared variables: 200,000 in a 50,000-network program)."""
+        self.slots += slots
+        self._taken.update([slot.name for slot in slots])
+
     def has_slot(self, name: str) -> bool:
         return name in self._taken
 

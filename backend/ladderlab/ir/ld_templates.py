@@ -70,16 +70,18 @@ class _Shape:
     """A network's shape key (``key``), its element ids in walk order and its variables in the order the key
     names them."""
 
-    def __init__(self, ctx: PouContext, network: ld.LdNetwork, operands: Callable[[str], Any]):
-        self.ctx, self._named = ctx, operands
-        self._symbols = ctx.info.symbols if ctx.info is not None and ctx.info.method is None else {}
+    def __init__(
+        self, ctx: PouContext, network: ld.LdNetwork, symbols: dict[str, Symbol], operands: Callable[[str], Any]
+    ):
+        """``symbols``: the POU's variables by upper-case name, looked up directly (none in a method's POU)."""
+        self.ctx, self._symbols, self._named = ctx, symbols, operands
         self.ids: list[str] = []
         self.positions: dict[Symbol, int] = {}  # the network's variables -> their position in ``values``
         self.values: list[Var] = []
         self._kinds: list[tuple[Any, ...]] = []
         self.texts: list[str] = []  # the operands kept as their text
         elements = self.series(network.elements)
-        if len(set(self.ids)) != len(self.ids) or any("." in ident for ident in self.ids):
+        if len(set(self.ids)) != len(self.ids) or "." in "".join(self.ids):  # (no element id with a dot)
             raise _Plain
         self.key = (tuple(self._kinds), elements)
 
@@ -109,7 +111,8 @@ class _Shape:
 
     def operand(self, text: str, fb: bool = False) -> tuple[Any, ...]:
         """An operand's part of the key: which variable of the network and its member, or else its text. (A
-        POU variable's plain name is looked up directly: it is what ``Operands.named_variable`` finds first.)"""
+        POU variable's plain name is looked up directly: it is what ``Operands.named_variable`` finds first.) A
+        variable new to the network takes the next position and puts its kind into the key."""
         symbol = self._symbols.get(text.upper())
         member = None
         if symbol is None:
@@ -118,15 +121,13 @@ class _Shape:
                 if fb:
                     raise _Plain
                 self.texts.append(text)
-            return ("text", text)
+                return ("text", text)
             symbol, member = named
         if (member is not None or fb) != isinstance(symbol.type, t.FbType) or (fb and member is not None):
             raise _Plain  # (a member of an FB instance only; an instance only where one is wanted)
         position = self.positions.get(symbol)
-        return "var", self.variable(symbol) if position is None else position, member
-
-    def variable(self, symbol: Symbol) -> int:
-        """A variable new to the network: its position; its kind goes into the key."""
+        if position is not None:
+            return "var", position, member
         if (
             symbol.constant
             or symbol.address is not None
@@ -149,7 +150,7 @@ class _Shape:
         self._kinds.append((kind, symbol.var_class))
         position = self.positions[symbol] = len(self.values)
         self.values.append(var)
-        return position
+        return "var", position, member
 
 
 class _Template:
@@ -279,10 +280,16 @@ class LdTemplates:
     def __init__(self, rung: _Rung):
         self.rung, self.ctx = rung, rung.ctx
         self.templates: dict[tuple[Any, ...], _Template | None] = {}
+        info = self.ctx.info
+        self._symbols = info.symbols if info is not None and info.method is None else {}
 
     def lower(self, network: ld.LdNetwork) -> Block:
         try:
-            shape = _Shape(self.ctx, network, self.rung.ops.named_variable) if network.label is None else None
+            shape = (
+                _Shape(self.ctx, network, self._symbols, self.rung.ops.named_variable)
+                if network.label is None
+                else None
+            )
         except _Plain:
             shape = None
         template = self.templates.get(shape.key, False) if shape is not None else None

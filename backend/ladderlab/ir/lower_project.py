@@ -176,11 +176,9 @@ def lower_pou(
     ctx = PouContext(checked, info, diagnostics, image)
     if base is not None:
         ctx.reserve(base.slots)
-    for symbol in info.symbols.values():
-        if symbol.var_class != "VAR_EXTERNAL":
-            slot = _slot(symbol, ctx, f"{info.name}/declarations")
-            if slot is not None:
-                ctx.add_slot(slot)
+    file = f"{info.name}/declarations"
+    declared = [_slot(symbol, ctx, file) for symbol in info.symbols.values() if symbol.var_class != "VAR_EXTERNAL"]
+    ctx.add_slots([slot for slot in declared if slot is not None])
     for slot in monitored_slots(info, ctx):
         if not ctx.has_slot(slot.name):
             ctx.add_slot(slot)

@@ -8,6 +8,7 @@ consumes (``CheckResult``); problems are ``Diagnostic``s, never exceptions.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable
 from functools import partial
 from typing import Any
@@ -17,7 +18,7 @@ from ..iec.addresses import incomplete, parse_address, type_problem
 from ..iec.spelling import did_you_mean
 from ..iec.values import article
 from ..model.diagnostics import Diagnostic
-from ..model.names import pou_name_problem
+from ..model.names import MAX_NAME_LENGTH, pou_name_problem
 from ..model.project import Project
 from . import ast
 from . import types as t
@@ -536,10 +537,17 @@ class ProjectChecker:
         ``twice(name)`` adds to the message of a name declared twice."""
         report = checker.report
         constant, retain, owner = block.constant, block.retain, pou.name if pou else None  # (once, not per name)
+        blocks = project_blocks(self.result.pous)
         for decl in block.decls:
-            spec, written = instance_spec(decl.type, project_blocks(self.result.pous))
-            ty = self.resolve(spec, checker)
-            self._check_decl(block, decl, ty, pou, report)
+            spec = decl.type
+            if type(spec) is ast.NamedType:  # most declarations: a type by its name (no FB_init arguments in it)
+                written, ty = None, self._named(spec, report)
+            else:
+                spec, written = instance_spec(spec, blocks)
+                ty = self.resolve(spec, checker)
+            plain = _nothing_to_check(ty, decl, written, constant)
+            if not plain:
+                self._check_decl(block, decl, ty, pou, report)
             init = decl.init
             if init is None and isinstance(spec, ast.NamedType):
                 typedef = self.result.types.get(spec.name.upper())
@@ -550,9 +558,9 @@ class ProjectChecker:
                 if name.address:
                     self._check_address(block, name, ty, pou, report)
                 key = (name.name or name.address or "").upper()
-                if key in table:
-                    written = name.name or name.address or ""
-                    report("ST-DUPLICATE", f"'{written}' is declared twice" + (twice(key) if twice else ""), name)
+                if key in table:  # (its text: ``written`` is the declaration's FB_init arguments, for every name)
+                    text = name.name or name.address or ""
+                    report("ST-DUPLICATE", f"'{text}' is declared twice" + (twice(key) if twice else ""), name)
                     continue
                 symbol = Symbol(
                     name.name or name.address,
@@ -569,7 +577,7 @@ class ProjectChecker:
                     owner,
                 )
                 table[key] = symbol
-                if record:
+                if record and not plain:
                     self._written_args.append((symbol, written, decl.type, checker, pou))
                     if self._args_checked:  # a test file's variables, declared after the project's check
                         self._check_written(*self._written_args.pop(), late=True)
@@ -730,6 +738,14 @@ def _redefinable(name: str) -> bool:
     return name in stdlib.REDEFINABLE or (t.codesys_typing() and name in stdlib.CODESYS_REDEFINABLE)
 
 
+def _nothing_to_check(ty: Type, decl: ast.VarDecl, written: list[Any] | None, constant: bool) -> bool:
+    """Whether ``decl``'s variables (of type ``ty``, FB_init arguments ``written``, in a CONSTANT block or not) are
+    ones ``_check_decl`` and ``_check_written`` find nothing to say about: elementary, without an edge, an initial
+    value, CONSTANT or arguments. Most of a large program's are (issue 27: 200,000 variables looked at again for
+    nothing; tests/st/test_declaration_checks.py compares with checking them all)."""
+    return type(ty) is t.Elementary and written is None and not decl.edge and decl.init is None and not constant
+
+
 def _elementary_decl(decl: ast.VarDecl) -> bool:
     return isinstance(decl.type, ast.NamedType) and t.elementary(decl.type.name) is not None
 
@@ -760,13 +776,20 @@ def check_project(project: Project) -> CheckResult:
         return ProjectChecker(with_libraries(project)).run()
 
 
+#: Names of letters and digits from a letter, at most MAX_NAME_LENGTH characters: ones ``pou_name_problem`` accepts and
+#: that do not end with '_', so only the keyword check is left (most declared names; issue 27,
+#: tests/st/test_declaration_checks.py compares with the full check)
+_PLAIN_NAME = re.compile(rf"[A-Za-z][A-Za-z0-9]{{0,{MAX_NAME_LENGTH - 1}}}\Z")
+
+
 def check_identifier(name: str, node: Any, report: Reporter) -> None:
     """A declared name: not a keyword or type name (KW-01, KW-02), no two '_' in a row, at most 64 characters
     (LEX-13, LEX-15); a trailing '_' only warns (IEC ed. 2 forbids it)."""
-    problem = pou_name_problem(name)
     if name.upper() in reserved_words():
         report("ST-NAME", f"'{name}' is a keyword or type name and cannot be declared as a name (KW-02)", node)
-    elif problem:
+    elif _PLAIN_NAME.match(name):
+        return
+    elif problem := pou_name_problem(name):
         report("ST-NAME", f"'{name}' is not a valid identifier: {problem}", node)
     elif name.endswith("_"):
         report(
