@@ -11,6 +11,8 @@ VAR_EXTERNAL).
     python benchmarks/lowering_digest.py --backend /tmp/base/backend base.json
     python benchmarks/lowering_digest.py branch.json
     python benchmarks/lowering_digest.py --compare base.json branch.json
+
+Without an output file (as ``make bench`` runs it) it prints the number of programs and one sha256 of them all.
 """
 
 from __future__ import annotations
@@ -124,12 +126,17 @@ def main() -> None:
     if os.environ.get(_CHILD) is None:  # a process whose ladderlab is the backend's, imported first (diagrams.py
         backend = pathlib.Path(args.backend or ROOT / "backend").resolve()  # puts this checkout's on the path)
         environment = {**os.environ, "PYTHONPATH": f"{backend}{os.pathsep}{ROOT}", _CHILD: "1"}
-        subprocess.run([sys.executable, __file__, args.output], check=True, env=environment)
+        subprocess.run([sys.executable, __file__, *[args.output] * bool(args.output)], check=True, env=environment)
         return
     import ladderlab  # noqa: F401
 
     os.environ["LADDERLAB_MAX_SOURCE_CHARACTERS"] = str(100 * max(NETWORKS))
-    pathlib.Path(args.output).write_text(json.dumps(digests(), indent=0, sort_keys=True))
+    text = json.dumps(digests(), indent=0, sort_keys=True)
+    if args.output:
+        pathlib.Path(args.output).write_text(text)
+    else:
+        total = hashlib.sha256(text.encode()).hexdigest()
+        print(f"{len(json.loads(text))} programs lowered, all together sha256 {total}")
 
 
 if __name__ == "__main__":
