@@ -1,5 +1,6 @@
-"""Scan-engine benchmark: microseconds per scan of the ironplc-benchmarks programs, and build time,
-microseconds per scan and peak memory of a 10,000-network LD-style program.
+"""Scan-engine benchmark: what a scan of an empty one-task program costs (the scan loop alone, issue 27: at most
+0.4 us), microseconds per scan of the ironplc-benchmarks programs, and build time, microseconds per scan and peak
+memory of a 10,000-network LD-style program.
 
 The program is IR built directly, the way the LD lowering emits a rung: every
 contact's power flow into a hidden BOOL slot, a coil reading the last one,
@@ -110,6 +111,31 @@ def ironplc_programs() -> None:
         print(f"scan ironplc-benchmarks/{path.name}: {(time.perf_counter() - before) / 1000 * 1e6:.1f} us per scan")
 
 
+EMPTY = "PROGRAM Main\nVAR x : INT; END_VAR\nEND_PROGRAM\n"  # one task (the default), nothing to run
+EMPTY_SCANS, EMPTY_ROUNDS = 20_000, 7
+
+
+def empty_program() -> None:
+    """Thread CPU per scan of a one-task program with an empty body: what the scan loop itself costs (issue 27
+    item 1: at most 0.4 us; statistics, forces and the watchdog cost nothing while unused). Best of the rounds."""
+    project, _ = source_to_project(EMPTY, "empty")
+    build = build_project(project) if project is not None else None
+    assert build is not None and build.compiled is not None
+    sim = build.simulation()
+    sim.cycle(1000)  # warm up the interpreter's specialisation
+    best = min(_thread_cpu(lambda: sim.cycle(EMPTY_SCANS)) for _ in range(EMPTY_ROUNDS))
+    print(
+        f"scan an empty one-task program: {best / EMPTY_SCANS * 1e6:.2f} us per scan thread CPU, best of "
+        f"{EMPTY_ROUNDS} x {EMPTY_SCANS:,} scans (target <= 0.4 us)"
+    )
+
+
+def _thread_cpu(run) -> float:
+    before = time.thread_time()
+    run()
+    return time.thread_time() - before
+
+
 NETWORKS = 10_000
 
 
@@ -143,6 +169,7 @@ def variant_part(variant: str) -> None:
 
 
 PARTS = {
+    "empty": empty_program,
     "ironplc": ironplc_programs,
     "fast": lambda: variant_part("fast"),
     "monitor": lambda: variant_part("monitor"),
