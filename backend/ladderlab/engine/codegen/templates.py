@@ -28,7 +28,7 @@ code with that of the same IR without ``filled``).
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
 from ...ir import nodes as ir
@@ -41,6 +41,8 @@ if TYPE_CHECKING:
 #: A variable's code in a line (split out of it) and a word (a name) in what is left
 _CODES = re.compile(r"(?<![\w.])((?:self|ll_p\d+|G\d*)\.v_\w+)")
 _WORD = re.compile(r"[A-Za-z0-9_]+")
+#: a page's local outside a variable's code (``(ll_p2, 'v_X')``): a twin on another page would need another text
+_PAGE_TEXT = re.compile(r"\bll_p\d")
 _PROBE = ("probe",)
 _DEAD = ("dead",)
 
@@ -56,16 +58,30 @@ class _Template:
     statements: list[int]  # the walk positions of the statements that registered an origin, in order
     temps: frozenset[str]  # the temporaries' locals and the pages the block's code uses
     pages: frozenset[int]
+    #: ``lines`` as one format string (``{i}``: code ``i``), filled in by one ``str.format`` (``_fill``)
+    text: str = field(init=False)
+
+    def __post_init__(self) -> None:
+        self.text = "\n".join(
+            "".join(
+                part.replace("{", "{{").replace("}", "}}") if isinstance(part, str) else f"{{{part}}}" for part in parts
+            )
+            for parts in self.lines
+        )
 
 
 @dataclass(slots=True)
 class _Twin:
     """What the first network filled in from a lowering template found (``BlockTemplates.emit``): the template of
-    its shape (None: emitted as usual) and its codes in the template's order, each the position of one of the
-    network's variables (``ir.Filled.variables``) or the code of another variable of its statements."""
+    its shape (None: emitted as usual), its codes in the template's order, each the position of one of the
+    network's variables (``ir.Filled.variables``) or the code of another variable of its statements, the
+    positions among them of the network's own variables and the pages the others use (a twin's code uses the pages
+    of its own variables instead of the first network's: ``_Filled``)."""
 
     template: _Template | None
     codes: list[str | int]
+    own: list[int] = field(default_factory=list)
+    pages: frozenset[int] = frozenset()
 
 
 class BlockTemplates:
@@ -78,8 +94,8 @@ class BlockTemplates:
     def emit(self, st: Statements, block: ir.Block, own_group: bool) -> None:
         """``st.statements(block.statements, own_group)``, from the block's template where there is one. A network
         the lowering filled in from a template of its own (``block.filled``) has the shape of the first network
-        filled from that template whose variables have the same pages and types and whose statements the same
-        liveness and stored inputs (``_Filled``): its shape is not computed again."""
+        filled from that template whose variables have the same types and whose statements the same liveness and
+        stored inputs (``_Filled``), whichever pages its variables live on: its shape is not computed again."""
         filled = _Filled.of(st, block) if block.filled is not None else None
         if filled is None:
             self._emit(st, block, own_group)
@@ -87,21 +103,23 @@ class BlockTemplates:
         key = (st.src.depth, st.blocks, own_group, block.filled, filled.key)
         twin = self._twins.get(key)
         if twin is None:
-            self._twins[key] = self._emit(st, block, own_group, filled.codes)
+            self._twins[key] = self._emit(st, block, own_group, filled)
         elif twin.template is None:
             st.statements(block.statements, own_group=own_group)
         else:
-            codes = filled.codes
+            codes, pages = filled.codes, filled.pages
+            used = {pages[i] for i in twin.own}
+            used.discard(0)
             _fill(
                 st,
                 twin.template,
                 [code if isinstance(code, str) else codes[code] for code in twin.codes],
                 filled.walked,
+                twin.pages.union(used),
             )
 
-    def _emit(self, st: Statements, block: ir.Block, own_group: bool, variables: list[str] | None = None) -> _Twin:
-        """``emit`` by the block's shape; what it found, for the twins of a filled network (``variables``: the codes
-        of its variables)."""
+    def _emit(self, st: Statements, block: ir.Block, own_group: bool, filled: _Filled | None = None) -> _Twin:
+        """``emit`` by the block's shape; what it found, for the twins of a filled network (``filled``)."""
         shape = _Shape(st)
         try:
             key = (st.src.depth, st.blocks, own_group, shape.statements(block.statements))
@@ -110,41 +128,54 @@ class BlockTemplates:
             st.statements(block.statements, own_group=own_group)
             return _Twin(None, [])
         if isinstance(template, _Template):
-            _fill(st, template, list(shape.codes), shape.walked)
+            _fill(st, template, list(shape.codes), shape.walked, template.pages)
         elif template is None:
             st.statements(block.statements, own_group=own_group)
         else:  # a new shape: emit it and learn it
             template = self._found[key] = _learn(st, block, own_group, shape)
-        if variables is None:
-            return _Twin(template, [])
-        position = {code: i for i, code in enumerate(variables)}
-        return _Twin(template, [position.get(code, code) for code in shape.codes])
+        if filled is None or template is None:
+            return _Twin(None, [])
+        position = {code: i for i, code in enumerate(filled.codes)}
+        codes = [position.get(code, code) for code in shape.codes]
+        own = [code for code in codes if isinstance(code, int)]
+        shared = frozenset(
+            int(code[4 : code.index(".")]) for code in codes if isinstance(code, str) and code[:4] == "ll_p"
+        )
+        if template.pages != shared.union(filled.pages[i] for i in own).difference((0,)) or any(
+            _PAGE_TEXT.search(part) for parts in template.lines for part in parts if isinstance(part, str)
+        ):  # a page its code uses that none of its codes names: the twins' pages are not known
+            return _Twin(None, [])
+        return _Twin(template, codes, own, shared)
 
 
 @dataclass(slots=True)
 class _Filled:
     """A network filled in from a lowering template (``ir.Filled``): what its shape (``_Shape``) holds besides the
-    template (``key``: its variables' types and pages, its statements' liveness and stored inputs), its variables'
-    codes and its statements in ``_Shape``'s order."""
+    template (``key``: its variables' types, its statements' liveness and stored inputs), its variables' codes and
+    pages, and its statements in ``_Shape``'s order. A variable's code names its page (``ll_p2.v_X``), so the pages
+    are not part of the shape: the code uses those of its variables (``_Twin``)."""
 
     key: tuple[Any, ...]
     codes: list[str]
+    pages: list[int]
     walked: list[ir.Stmt]
 
     @staticmethod
     def of(st: Statements, block: ir.Block) -> _Filled | None:
         """None when a variable is not a slot of the POU named plainly (its shape is computed: ``_Shape.var``)."""
         place = st.scope.placed
-        facts: list[tuple[int, int, int]] = []
+        facts: list[tuple[int, int]] = []
         codes: list[str] = []
+        pages: list[int] = []
         filled = block.filled
         assert filled is not None  # (asked only of filled networks)
         for var in filled.variables(block.statements):
             code, ty, page = place(var)
             if not (page or code.startswith("self.v_")) or code.startswith("v_w", code.find(".") + 1):
                 return None  # (not a slot of this POU, or an escaped name: ``_Shape.var``)
-            facts.append((id(var.type), id(ty), page))
+            facts.append((id(var.type), id(ty)))
             codes.append(code)
+            pages.append(page)
         if len(set(codes)) != len(codes):
             return None
         once = st.stored_once
@@ -158,7 +189,7 @@ class _Filled:
             flags = tuple(
                 [(id(s) in dead, folds.get(id(s)), once(s) if type(s) is ir.FbCall else None) for s in walked]
             )
-        return _Filled((tuple(facts), flags), codes, walked)
+        return _Filled((tuple(facts), flags), codes, pages, walked)
 
 
 def _learn(st: Statements, block: ir.Block, own_group: bool, shape: _Shape) -> _Template | None:
@@ -208,6 +239,8 @@ def _holes(lines: list[str], shape: _Shape) -> list[tuple[str | int, ...]] | Non
     names = {part for code in codes for part in (code.partition(".v_")[2], code.partition(".")[2])}
     template = []
     for line in lines:
+        if "\n" in line:  # (never a line of code: ``_Template.text`` is split at them)
+            return None
         parts: list[str | int] = []
         for i, piece in enumerate(_CODES.split(line)):
             if i % 2:  # a code
@@ -223,17 +256,18 @@ def _holes(lines: list[str], shape: _Shape) -> list[tuple[str | int, ...]] | Non
     return template
 
 
-def _fill(st: Statements, template: _Template, codes: list[str], walked: list[ir.Stmt]) -> None:
+def _fill(st: Statements, template: _Template, codes: list[str], walked: list[ir.Stmt], pages: frozenset[int]) -> None:
     """The template's lines with this block's variables' ``codes``, its statements' origins registered in order
-    (``walked``: its statements in ``_Shape``'s order)."""
+    (``walked``: its statements in ``_Shape``'s order), ``pages`` noted as used."""
     src, module, scope = st.src, st.module, st.scope
     outer = src.origin
-    for parts in template.lines:
-        src.lines.append("".join(part if isinstance(part, str) else codes[part] for part in parts))
-    oids = [module.origin(walked[i].origin, walked[i]) for i in template.statements]
-    src.line_origins.extend(outer if k < 0 else oids[k] for k in template.origins)
+    if template.lines:
+        src.lines.extend(template.text.format(*codes).split("\n"))
+    origin = module.origin
+    oids = [origin(walked[i].origin, walked[i]) for i in template.statements]
+    src.line_origins.extend([outer if k < 0 else oids[k] for k in template.origins])
     scope.temps_used |= template.temps
-    scope.pages_used |= template.pages
+    scope.pages_used |= pages
     st._output_line = None  # (as its shape's first network left it: ``_learn``)
 
 
