@@ -222,24 +222,37 @@ def _declared_again(module: ModuleContext, target: str, ty: t.IrType, initial: o
 
 def _plain_inits(module: ModuleContext, places: list, target, owner: str, src: Source) -> None:
     """Initialise slots; consecutive slots of one object with one immutable literal value share one ``ll_fill``
-    (a 10,000-network POU has runs of a dozen FALSE slots: one call compiles much faster than the assignments)."""
+    (a 10,000-network POU has runs of a dozen FALSE slots: one call compiles much faster than the assignments).
+    ``target(place)`` is ``<the object holding the place's page>.<its attribute>``."""
     run: list[str] = []  # attributes of ``holder``
     holder = shared = ""
+    page, mine = -1, ""  # the page of the last place and the object holding it
+    #: the value of a slot declared without one, and whether it is immutable, by its type's identity: the same for
+    #: each slot of that type object (a 50,000-network POU has 200,000 slots of a handful of types; each entry holds
+    #: its type, which so keeps its id)
+    defaults: dict[int, tuple[t.IrType, str, bool]] = {}
     for place in places:
-        value = _init_value(module, place.slot, owner)
-        if value is None:
-            continue
-        code = target(place)
-        mine, _, attr = code.rpartition(".")  # the object (``self``, ``ll_p2``, ``G``) and the attribute
-        immutable = _immutable(value)
+        slot = place.slot
+        known = defaults.get(id(slot.type)) if slot.initial is None and slot.var_class != "VAR_IN_OUT" else None
+        if known is None:
+            value = _init_value(module, slot, owner)
+            if value is None:
+                continue
+            immutable = _immutable(value)
+            if slot.initial is None and slot.var_class != "VAR_IN_OUT":
+                defaults[id(slot.type)] = slot.type, value, immutable
+        else:
+            _, value, immutable = known
+        if place.page != page:
+            page, mine = place.page, target(place).rpartition(".")[0]
         if run and (not immutable or value != shared or mine != holder):
             _fill(holder, run, shared, src)
             run = []
         if immutable:
-            run.append(attr)
+            run.append(place.attr)
             holder, shared = mine, value
         else:
-            src.line(f"{code} = {value}")
+            src.line(f"{mine}.{place.attr} = {value}")
     if run:
         _fill(holder, run, shared, src)
     _pin_constants(module, places, target, src)
