@@ -227,20 +227,27 @@ def _plain_inits(module: ModuleContext, places: list, target, owner: str, src: S
     run: list[str] = []  # attributes of ``holder``
     holder = shared = ""
     page, mine = -1, ""  # the page of the last place and the object holding it
-    #: the value of a slot declared without one, and whether it is immutable, by its type's identity: the same for
-    #: each slot of that type object (a 50,000-network POU has 200,000 slots of a handful of types; each entry holds
-    #: its type, which so keeps its id)
-    defaults: dict[int, tuple[t.IrType, str, bool]] = {}
+    #: the value of a slot with a scalar initial value (the lowering gives one to each slot declared without: its
+    #: type's default) and whether it is immutable, by its type's identity and that value: the same for each slot of
+    #: that type object (a 50,000-network POU has 200,000 slots of a handful of types and values; each entry holds its
+    #: type, which so keeps its id)
+    values: dict[tuple[int, type, object], tuple[t.IrType, str, bool]] = {}
     for place in places:
         slot = place.slot
-        known = defaults.get(id(slot.type)) if slot.initial is None and slot.var_class != "VAR_IN_OUT" else None
+        initial = slot.initial
+        key = (
+            (id(slot.type), type(initial), initial)
+            if type(initial) in _SHARED and slot.var_class != "VAR_IN_OUT"
+            else None
+        )
+        known = values.get(key) if key is not None else None
         if known is None:
             value = _init_value(module, slot, owner)
             if value is None:
                 continue
             immutable = _immutable(value)
-            if slot.initial is None and slot.var_class != "VAR_IN_OUT":
-                defaults[id(slot.type)] = slot.type, value, immutable
+            if key is not None:
+                values[key] = slot.type, value, immutable
         else:
             _, value, immutable = known
         if place.page != page:
@@ -256,6 +263,11 @@ def _plain_inits(module: ModuleContext, places: list, target, owner: str, src: S
     if run:
         _fill(holder, run, shared, src)
     _pin_constants(module, places, target, src)
+
+
+#: the kinds of initial value whose slots of one type object share their initialiser's text (not floats: -0.0 and 0.0
+#: are equal keys; the kinds apart: 1 and True are too)
+_SHARED = (type(None), bool, int, str)
 
 
 def _pin_constants(module: ModuleContext, places: list[Place], target: Callable[[Place], str], src: Source) -> None:
