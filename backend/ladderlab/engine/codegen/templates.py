@@ -234,9 +234,10 @@ def _learn(st: Statements, block: ir.Block, own_group: bool, shape: _Shape) -> _
 
 def _holes(lines: list[str], shape: _Shape) -> list[tuple[str | int, ...]] | None:
     """``lines`` with each variable's code a hole (its index); None when a code of no variable of the block, or a
-    variable's name outside its code (a message naming it), is in them."""
+    variable's name or attribute outside its code (a message naming it, a reference ``(self, 'v_X')`` to it), is in
+    them."""
     codes = shape.codes
-    names = {part for code in codes for part in (code.partition(".v_")[2], code.partition(".")[2])}
+    names = {part.upper() for code in codes for part in (code.partition(".v_")[2], code.partition(".")[2])}
     template = []
     for line in lines:
         if "\n" in line:  # (never a line of code: ``_Template.text`` is split at them)
