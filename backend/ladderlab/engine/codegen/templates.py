@@ -58,28 +58,36 @@ class _Template:
     statements: list[int]  # the walk positions of the statements that registered an origin, in order
     temps: frozenset[str]  # the temporaries' locals and the pages the block's code uses
     pages: frozenset[int]
-    #: ``lines`` as one format string (``{i}``: code ``i``), filled in by one ``str.format`` (``_fill``)
-    text: str = field(init=False)
+    text: str = field(init=False)  # ``lines`` to fill in (``text(...)``) with the block's codes
 
     def __post_init__(self) -> None:
-        self.text = "\n".join(
-            "".join(
-                part.replace("{", "{{").replace("}", "}}") if isinstance(part, str) else f"{{{part}}}" for part in parts
-            )
-            for parts in self.lines
-        )
+        self.text = self.format([])
+
+    def format(self, codes: list[str | int]) -> str:
+        """``lines`` as one ``str.format`` string (filled in at once: ``_fill``), each hole ``i`` by ``codes[i]``:
+        a code itself or the position of the code filled in (by ``i`` itself beyond ``codes``)."""
+        parts = []
+        for line in self.lines:
+            for part in line:
+                if isinstance(part, int):
+                    part = codes[part] if part < len(codes) else part
+                    parts.append(part.replace("{", "{{").replace("}", "}}") if isinstance(part, str) else f"{{{part}}}")
+                else:
+                    parts.append(part.replace("{", "{{").replace("}", "}}"))
+            parts.append("\n")
+        return "".join(parts[:-1])
 
 
 @dataclass(slots=True)
 class _Twin:
     """What the first network filled in from a lowering template found (``BlockTemplates.emit``): the template of
-    its shape (None: emitted as usual), its codes in the template's order, each the position of one of the
-    network's variables (``ir.Filled.variables``) or the code of another variable of its statements, the
-    positions among them of the network's own variables and the pages the others use (a twin's code uses the pages
-    of its own variables instead of the first network's: ``_Filled``)."""
+    its shape (None: emitted as usual), its text with the codes of the variables of its statements besides the
+    network's own (``ir.Filled.variables``) and the positions of these among those (``text``), the positions in
+    the text of the network's own variables and the pages the others use (a twin's code uses the pages of its own
+    variables instead of the first network's: ``_Filled``)."""
 
     template: _Template | None
-    codes: list[str | int]
+    text: str = ""
     own: list[int] = field(default_factory=list)
     pages: frozenset[int] = frozenset()
 
@@ -107,16 +115,10 @@ class BlockTemplates:
         elif twin.template is None:
             st.statements(block.statements, own_group=own_group)
         else:
-            codes, pages = filled.codes, filled.pages
+            pages = filled.pages
             used = {pages[i] for i in twin.own}
             used.discard(0)
-            _fill(
-                st,
-                twin.template,
-                [code if isinstance(code, str) else codes[code] for code in twin.codes],
-                filled.walked,
-                twin.pages.union(used),
-            )
+            _fill(st, twin.template, twin.text, filled.codes, filled.walked, twin.pages.union(used))
 
     def _emit(self, st: Statements, block: ir.Block, own_group: bool, filled: _Filled | None = None) -> _Twin:
         """``emit`` by the block's shape; what it found, for the twins of a filled network (``filled``)."""
@@ -126,15 +128,15 @@ class BlockTemplates:
             template = self._found.get(key, False)
         except (_Unshaped, TypeError):  # (TypeError: an unhashable field)
             st.statements(block.statements, own_group=own_group)
-            return _Twin(None, [])
+            return _Twin(None)
         if isinstance(template, _Template):
-            _fill(st, template, list(shape.codes), shape.walked, template.pages)
+            _fill(st, template, template.text, list(shape.codes), shape.walked, template.pages)
         elif template is None:
             st.statements(block.statements, own_group=own_group)
         else:  # a new shape: emit it and learn it
             template = self._found[key] = _learn(st, block, own_group, shape)
         if filled is None or template is None:
-            return _Twin(None, [])
+            return _Twin(None)
         position = {code: i for i, code in enumerate(filled.codes)}
         codes = [position.get(code, code) for code in shape.codes]
         own = [code for code in codes if isinstance(code, int)]
@@ -144,8 +146,8 @@ class BlockTemplates:
         if template.pages != shared.union(filled.pages[i] for i in own).difference((0,)) or any(
             _PAGE_TEXT.search(part) for parts in template.lines for part in parts if isinstance(part, str)
         ):  # a page its code uses that none of its codes names: the twins' pages are not known
-            return _Twin(None, [])
-        return _Twin(template, codes, own, shared)
+            return _Twin(None)
+        return _Twin(template, template.format(codes), own, shared)
 
 
 @dataclass(slots=True)
@@ -257,13 +259,15 @@ def _holes(lines: list[str], shape: _Shape) -> list[tuple[str | int, ...]] | Non
     return template
 
 
-def _fill(st: Statements, template: _Template, codes: list[str], walked: list[ir.Stmt], pages: frozenset[int]) -> None:
-    """The template's lines with this block's variables' ``codes``, its statements' origins registered in order
-    (``walked``: its statements in ``_Shape``'s order), ``pages`` noted as used."""
+def _fill(
+    st: Statements, template: _Template, text: str, codes: list[str], walked: list[ir.Stmt], pages: frozenset[int]
+) -> None:
+    """The template's lines (``text``: ``template.text`` or a twin's) with this block's ``codes``, its statements'
+    origins registered in order (``walked``: its statements in ``_Shape``'s order), ``pages`` noted as used."""
     src, module, scope = st.src, st.module, st.scope
     outer = src.origin
     if template.lines:
-        src.lines.extend(template.text.format(*codes).split("\n"))
+        src.lines.extend(text.format(*codes).split("\n"))
     origin = module.origin
     oids = [origin(walked[i].origin, walked[i]) for i in template.statements]
     src.line_origins.extend([outer if k < 0 else oids[k] for k in template.origins])
