@@ -203,58 +203,53 @@ class Walk:
         self._depth = 0
 
     def statements(self, statements: list[ir.Stmt]) -> None:
-        expression = self.expression
         for s in statements:
-            kind = type(s)
-            if kind is ir.Probe:  # (most statements of a diagram: a probe of a power flow's temporary)
+            if type(s) is ir.Probe:  # (most statements of a diagram: a probe of a power flow's temporary)
                 if type(s.value) is ir.Var and not s.value.path:
                     continue
-            elif kind is ir.FbCall:
+            elif type(s) is ir.FbCall:
                 self.fb_calls.append(s)
                 if self._depth:
                     self.nested_fb_calls.add(id(s))
-            elif kind is ir.Jump:
+            elif type(s) is ir.Jump:
                 self.jumps = True
-            elif kind is ir.Return:
+            elif type(s) is ir.Return:
                 self.returns = True
-            own = _OWN_EXPRESSIONS.get(kind)  # (``own_expressions``)
-            if own is not None:
-                for e in own(s):
-                    if e is not None:
-                        expression(e)
-            if kind is not ir.Assign and kind is not ir.Probe and not isinstance(s, _LEAVES):
+            for e in own_expressions(s):
+                if e is not None:
+                    self.expression(e)
+            if not isinstance(s, _LEAVES):
                 self._depth += 1
                 for body in nested(s):
                     self.statements(body)
                 self._depth -= 1
 
     def expression(self, e: ir.Expr) -> None:
-        kind = type(e)
-        if kind is ir.Var:
+        if type(e) is ir.Var:
             if type(e.type) is t.FbInstance:
                 self.whole_fbs.add(
                     e.path[-1].name.upper() if e.path and type(e.path[-1]) is ir.Member else e.name.upper()
                 )
             if e.path:
                 self.paths.append(e)
-                for selector in e.path:
-                    if type(selector) is ir.Index:
-                        for index in selector.indices:
-                            self.expression(index)
-        elif kind is ir.Binary:
+            for selector in e.path:
+                if type(selector) is ir.Index:
+                    for index in selector.indices:
+                        self.expression(index)
+        elif type(e) is ir.Binary:
             self.expression(e.left)
             self.expression(e.right)
-        elif kind is ir.Call:
+        elif type(e) is ir.Call:
             self.in_outs += e.in_outs
             for a in (*e.args, *e.in_outs):
                 self.expression(a)
-        elif kind is ir.Unary or kind is ir.Convert or kind is ir.Fit:
+        elif type(e) is ir.Unary or type(e) is ir.Convert or type(e) is ir.Fit:
             self.expression(e.operand)
-        elif kind is ir.AddressOf:
+        elif type(e) is ir.AddressOf:
             if e.var.scope == "local":
                 self.addressed.add(e.var.name.upper())
             self.expression(e.var)
-        elif kind is ir.Attempt or kind is ir.View:
+        elif type(e) is ir.Attempt or type(e) is ir.View:
             self.expression(e.value)
 
 
