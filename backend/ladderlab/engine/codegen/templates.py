@@ -12,17 +12,20 @@ indentation, and for each variable the page of its slot (``self.v_X``, ``ll_p2.v
 same (``x AND x``, a read forwarded from the local just stored). Only the variables' names are left out. A network
 is emitted as usual, and its shape never reused, when anything else could differ: a variable that is not a slot
 of the POU named plainly (a global, an in-out, a located variable, an escaped name), a variable's name left in
-the text outside its code (a message naming it), a code of no variable of the network, a statement this
-module does not model (loops, jumps, returns), or a side effect of the emission besides the origins and the
-pages and temporaries used (a diagnostic, a bound constant, a numbered temporary, an outlined body). Only the
+the text outside its code (a message naming it) or its attribute (an in-out's reference ``(self, 'v_X')``), a code
+of no variable of the network, a statement this module does not model (loops, jumps, returns), or a side effect
+of the emission besides the origins and the pages and temporaries used (a diagnostic, a bound constant, a numbered
+temporary, an outlined body). Only the
 fast variant, which records no probe, is filled in (tests/engine/test_block_templates.py compares the module,
 its line origins and its origins with those of the plain emission).
 
 A network the LD lowering filled in from a template of its own (``ir.Block.filled``) is not walked for its shape:
 the lowering's networks of one template differ only in their variables (and origins and probe names), so its shape
-is that of the first of them whose variables have the same types and pages and whose statements have the same
-dead stores, folds and stored inputs (``_Filled``, ``_Twin``; tests/engine/test_filled_networks.py compares the
-code with that of the same IR without ``filled``).
+is that of the first of them whose variables have the same types and whose statements have the same dead stores,
+folds and stored inputs (``_Filled``, ``_Twin``; tests/engine/test_filled_networks.py compares the code with that
+of the same IR without ``filled``), on whichever pages its variables live: a variable's code names its page
+(``ll_p2.v_X``), so the pages the code loads are those its codes name, the first network's shared variables' and
+the network's own (the template is kept only where its pages are just those).
 """
 
 from __future__ import annotations
