@@ -50,6 +50,15 @@ _PROBE = ("probe",)
 _DEAD = ("dead",)
 
 
+#: a template's lines to fill in (``_Template.format``): format texts of lines with holes, tuples of lines without
+_Text = list[str | tuple[str, ...]]
+
+
+def _escaped(code: str | int) -> str:
+    """``code`` in a format text: itself (braces doubled), or the hole of the code at that position."""
+    return code.replace("{", "{{").replace("}", "}}") if isinstance(code, str) else f"{{{code}}}"
+
+
 class _Unshaped(Exception):
     """The block has something a template does not model: it is emitted as usual."""
 
@@ -61,24 +70,34 @@ class _Template:
     statements: list[int]  # the walk positions of the statements that registered an origin, in order
     temps: frozenset[str]  # the temporaries' locals and the pages the block's code uses
     pages: frozenset[int]
-    text: str = field(init=False)  # ``lines`` to fill in (``text(...)``) with the block's codes
+    text: _Text = field(init=False)  # ``lines`` to fill in with the block's codes (``format``)
 
     def __post_init__(self) -> None:
         self.text = self.format([])
 
-    def format(self, codes: list[str | int]) -> str:
-        """``lines`` as one ``str.format`` string (filled in at once: ``_fill``), each hole ``i`` by ``codes[i]``:
-        a code itself or the position of the code filled in (by ``i`` itself beyond ``codes``)."""
-        parts = []
+    def format(self, codes: list[str | int]) -> _Text:
+        """``lines`` to fill in (``_fill``): each run of lines with holes as one ``str.format`` text (filled in at
+        once), each hole ``i`` by ``codes[i]`` (a code itself, or the position of the code filled in; ``i`` itself
+        beyond ``codes``); each run of lines without as those lines, the same strings in every network filled in."""
+        text: _Text = []
         for line in self.lines:
-            for part in line:
-                if isinstance(part, int):
-                    part = codes[part] if part < len(codes) else part
-                    parts.append(part.replace("{", "{{").replace("}", "}}") if isinstance(part, str) else f"{{{part}}}")
+            last = text[-1] if text else None
+            if len(line) == 1:  # a line without a hole (``_holes`` split nothing off)
+                whole = line[0]
+                assert isinstance(whole, str)
+                if isinstance(last, tuple):
+                    text[-1] = last + (whole,)
                 else:
-                    parts.append(part.replace("{", "{{").replace("}", "}}"))
-            parts.append("\n")
-        return "".join(parts[:-1])
+                    text.append((whole,))
+                continue
+            filled = "".join(
+                _escaped(part if isinstance(part, str) else codes[part] if part < len(codes) else part) for part in line
+            )
+            if isinstance(last, str):
+                text[-1] = f"{last}\n{filled}"
+            else:
+                text.append(filled)
+        return text
 
 
 @dataclass(slots=True)
@@ -90,7 +109,7 @@ class _Twin:
     variables instead of the first network's: ``_Filled``)."""
 
     template: _Template | None
-    text: str = ""
+    text: _Text = field(default_factory=list)
     own: list[int] = field(default_factory=list)
     pages: frozenset[int] = frozenset()
 
@@ -263,14 +282,18 @@ def _holes(lines: list[str], shape: _Shape) -> list[tuple[str | int, ...]] | Non
 
 
 def _fill(
-    st: Statements, template: _Template, text: str, codes: list[str], walked: list[ir.Stmt], pages: frozenset[int]
+    st: Statements, template: _Template, text: _Text, codes: list[str], walked: list[ir.Stmt], pages: frozenset[int]
 ) -> None:
     """The template's lines (``text``: ``template.text`` or a twin's) with this block's ``codes``, its statements'
     origins registered in order (``walked``: its statements in ``_Shape``'s order), ``pages`` noted as used."""
     src, module, scope = st.src, st.module, st.scope
     outer = src.origin
-    if template.lines:
-        src.lines.extend(text.format(*codes).split("\n"))
+    lines = src.lines
+    for run in text:
+        if isinstance(run, tuple):
+            lines.extend(run)
+        else:
+            lines.extend(run.format(*codes).split("\n"))
     origin = module.origin
     oids = [origin(walked[i].origin, walked[i]) for i in template.statements]
     src.line_origins.extend([outer if k < 0 else oids[k] for k in template.origins])
