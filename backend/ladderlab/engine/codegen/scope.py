@@ -49,7 +49,8 @@ class Scope:
         #: the variables whose references die with the call (framed_variables): its calls have a Frame
         self.framed: set[str] = set()
         self.pages_used: set[int] = set()
-        self._temps = 0
+        #: the prefix of each numbered temporary made (``temp``), the first's first
+        self.temp_prefixes: list[str] = []
         #: ``placed`` by the name of a local variable and of a global one
         self._locals: dict[str, tuple[str, t.IrType, int]] = {}
         self._globals: dict[str, tuple[str, t.IrType, int]] = {}
@@ -61,8 +62,8 @@ class Scope:
         self.templates = BlockTemplates() if not (module.debug or self.function) else None
 
     def temp(self, prefix: str) -> str:
-        self._temps += 1
-        return f"ll_{prefix}{self._temps}"
+        self.temp_prefixes.append(prefix)
+        return f"ll_{prefix}{len(self.temp_prefixes)}"
 
     def slot(self, var: ir.Var) -> ir.Slot:
         if var.scope == "global":

@@ -3,7 +3,8 @@
 A large LD/FBD body repeats a few network shapes with other variables: ``--| A1 |--|/ B1 |--( C1 )--`` and
 ``--| A2 |--|/ B2 |--( C2 )--`` differ in nothing but the slots they name. ``BlockTemplates`` emits the first
 network of a shape as ``Statements`` does and keeps its lines with each variable's code (``self.v_A1``) as a
-hole; a later network of that shape gets those lines with its own variables' codes (``self.v_A2``), its
+hole, and each numbered temporary it made (``ll_x1``, ``Scope.temp``) as one too; a later network of that shape
+gets those lines with its own variables' codes (``self.v_A2``) and temporaries made anew (``ll_x7``), its
 statements' origins registered in the same order and its lines tagged as the first network's were.
 
 The shape (``_Shape``) is everything the emitted text may depend on: each statement and expression node with all
@@ -14,10 +15,10 @@ is emitted as usual, and its shape never reused, when anything else could differ
 of the POU named plainly (a global, an in-out, a located variable, an escaped name), a variable's name left in
 the text outside its code (a message naming it) or its attribute (an in-out's reference ``(self, 'v_X')``), a code
 of no variable of the network, a statement this module does not model (loops, jumps, returns), or a side effect
-of the emission besides the origins and the pages and temporaries used (a diagnostic, a bound constant, a numbered
-temporary, an outlined body). Only the
-fast variant, which records no probe, is filled in (tests/engine/test_block_templates.py compares the module,
-its line origins and its origins with those of the plain emission).
+of the emission besides the origins, the pages and temporaries used and the numbered temporaries made (a
+diagnostic, a bound constant, an outlined body). Only the fast variant, which records no probe, is filled in
+(tests/engine/test_block_templates.py compares the module, its line origins and its origins with those of the
+plain emission).
 
 A network the LD lowering filled in from a template of its own (``ir.Block.filled``) is not walked for its shape:
 the lowering's networks of one template differ only in their variables (and origins and probe names), so its shape
@@ -70,6 +71,7 @@ class _Template:
     statements: list[int]  # the walk positions of the statements that registered an origin, in order
     temps: frozenset[str]  # the temporaries' locals and the pages the block's code uses
     pages: frozenset[int]
+    temporaries: list[str]  # the prefixes of the numbered temporaries it makes, in order (``Scope.temp``)
     text: _Text = field(init=False)  # ``lines`` to fill in with the block's codes (``format``)
 
     def __post_init__(self) -> None:
@@ -162,6 +164,7 @@ class BlockTemplates:
         position = {code: i for i, code in enumerate(filled.codes)}
         codes = [position.get(code, code) for code in shape.codes]
         own = [code for code in codes if isinstance(code, int)]
+        codes += range(len(filled.codes), len(filled.codes) + len(template.temporaries))  # (``_fill`` adds them)
         shared = frozenset(
             int(code[4 : code.index(".")]) for code in codes if isinstance(code, str) and code[:4] == "ll_p"
         )
@@ -220,7 +223,8 @@ def _learn(st: Statements, block: ir.Block, own_group: bool, shape: _Shape) -> _
     """Emit the block as usual; its template, or None when something besides its text and origins changed."""
     src, module, scope = st.src, st.module, st.scope
     lines, origins, outer = len(src.lines), len(module.origins), src.origin
-    counts = (len(module.diagnostics), len(module.bound), scope._temps, len(st.outlines.lines))
+    counts = (len(module.diagnostics), len(module.bound), len(st.outlines.lines))
+    made = len(scope.temp_prefixes)
     temps, pages = scope.temps_used, scope.pages_used
     scope.temps_used, scope.pages_used = set(), set()
     try:
@@ -230,8 +234,10 @@ def _learn(st: Statements, block: ir.Block, own_group: bool, shape: _Shape) -> _
         temps |= used_temps
         pages |= used_pages
         scope.temps_used, scope.pages_used = temps, pages
-    if counts != (len(module.diagnostics), len(module.bound), scope._temps, len(st.outlines.lines)):
+    if counts != (len(module.diagnostics), len(module.bound), len(st.outlines.lines)):
         return None
+    prefixes = scope.temp_prefixes[made:]  # the numbered temporaries it made: holes too, made anew for each network
+    numbered = [f"ll_{prefix}{made + i}" for i, prefix in enumerate(prefixes, 1)]
     held = st._output_line  # an inlined FB's output store that a following statement may chain onto
     if held is not None and held[0] is src and held[1] == len(src.lines) - 1:  # (Statements._chained): the last line
         return None
@@ -250,18 +256,20 @@ def _learn(st: Statements, block: ir.Block, own_group: bool, shape: _Shape) -> _
             line_origins.append(-1)
         else:
             return None
-    template = _holes(src.lines[lines:], shape)
+    template = _holes(src.lines[lines:], shape, numbered)
     if template is None:
         return None
-    return _Template(template, line_origins, statements, frozenset(used_temps), frozenset(used_pages))
+    return _Template(template, line_origins, statements, frozenset(used_temps), frozenset(used_pages), prefixes)
 
 
-def _holes(lines: list[str], shape: _Shape) -> list[tuple[str | int, ...]] | None:
-    """``lines`` with each variable's code a hole (its index); None when a code of no variable of the block, or a
-    variable's name or attribute outside its code (a message naming it, a reference ``(self, 'v_X')`` to it), is in
-    them."""
+def _holes(lines: list[str], shape: _Shape, numbered: list[str]) -> list[tuple[str | int, ...]] | None:
+    """``lines`` with each variable's code a hole (its index) and each ``numbered`` temporary one (its index after
+    the codes); None when a code of no variable of the block, or a variable's name or attribute outside its code (a
+    message naming it, a reference ``(self, 'v_X')`` to it), is in them."""
     codes = shape.codes
     names = {part.upper() for code in codes for part in (code.partition(".v_")[2], code.partition(".")[2])}
+    temporaries = {name: len(codes) + i for i, name in enumerate(numbered)}
+    split = re.compile(rf"(?<!\w)({'|'.join(numbered)})(?!\w)") if numbered else None
     template = []
     for line in lines:
         if "\n" in line:  # (never a line of code: ``_Template.text`` is split at them)
@@ -275,8 +283,10 @@ def _holes(lines: list[str], shape: _Shape) -> list[tuple[str | int, ...]] | Non
                 parts.append(found)
             elif any(word.upper() in names for word in _WORD.findall(piece)):
                 return None
-            else:
+            elif split is None:
                 parts.append(piece)
+            else:
+                parts += [temporaries[part] if k % 2 else part for k, part in enumerate(split.split(piece))]
         template.append(tuple(parts))
     return template
 
@@ -288,6 +298,8 @@ def _fill(
     origins registered in order (``walked``: its statements in ``_Shape``'s order), ``pages`` noted as used."""
     src, module, scope = st.src, st.module, st.scope
     outer = src.origin
+    if template.temporaries:  # (made now: numbered as the plain emission would)
+        codes = [*codes, *[scope.temp(prefix) for prefix in template.temporaries]]
     lines = src.lines
     for run in text:
         if isinstance(run, tuple):
