@@ -105,10 +105,10 @@ class _Template:
 @dataclass(slots=True)
 class _Twin:
     """What the first network filled in from a lowering template found (``BlockTemplates.emit``): the template of
-    its shape (None: emitted as usual), its text with the codes of the variables of its statements besides the
-    network's own (``ir.Filled.variables``) and the positions of these among those (``text``), the positions in
-    the text of the network's own variables and the pages the others use (a twin's code uses the pages of its own
-    variables instead of the first network's: ``_Filled``)."""
+    its shape (None: emitted as usual); its text (``_Template.format``), with the codes of the variables of its
+    statements other than the network's own written in and the network's own (``ir.Filled.variables``) as holes by
+    their position among those; the positions the text fills in, and the pages the other codes name (a twin loads
+    those and its own variables' pages: ``_Filled``)."""
 
     template: _Template | None
     text: _Text = field(default_factory=list)
