@@ -22,7 +22,8 @@ from ladderlab.engine.codegen.layout import PAGE_SIZE
 from ladderlab.ir import nodes as ir
 from ladderlab.ir.lower_project import lower_project
 from ladderlab.model import ld
-from ladderlab.model.project import Project
+from ladderlab.model.project import Pou, Project, Task
+from ladderlab.simulation.build import build_project
 from tests.support import ld_shapes_project
 
 BOOLS = [f"B{i}" for i in range(4)]
@@ -126,3 +127,45 @@ def test_the_shape_models_every_field_of_the_statements_it_fills() -> None:
         ir.Const: ["value", "type"],
     }
     assert {cls: [f.name for f in dataclasses.fields(cls)] for cls in modelled} == modelled
+
+
+def test_a_network_passing_its_variable_to_an_in_out_names_its_own() -> None:
+    """An LD box calling a FUNCTION with a VAR_IN_OUT passes a reference to its network's own variable (``f_INC((self,
+    'v_A1'))``: the attribute outside the variable's code), never the first network of the shape's: each call adds
+    1 to its own argument (IEC 61131-3 VAR_IN_OUT: by reference; CODESYS's online help, "VAR_IN_OUT")."""
+    networks = [
+        ld.LdNetwork(
+            id=f"n{n}",
+            elements=[
+                ld.Contact(id=f"c{n}", var=f"B{n}", mode="no"),
+                ld.Box(id=f"b{n}", call="INC", en=True, inputs={"X": f"A{n}"}),
+                ld.Coil(id=f"k{n}", var=f"C{n}", mode="normal"),
+            ],
+        )
+        for n in range(3)
+    ]
+    main = Pou(
+        name="Main",
+        kind="program",
+        language="ld",
+        declarations="VAR A0, A1, A2 : INT; B0, B1, B2 : BOOL := TRUE; C0, C1, C2 : BOOL; END_VAR",
+        body=ld.LdBody(networks=networks),
+    )
+    inc = Pou(
+        name="INC",
+        kind="function",
+        language="st",
+        return_type="BOOL",
+        declarations="VAR_IN_OUT X : INT; END_VAR",
+        body="X := X + 1; INC := TRUE;",
+    )
+    project = Project(name="in_out", pous=[main, inc], tasks=[Task(name="main", interval="T#10ms", programs=["Main"])])
+    _both(project)
+    build = build_project(project, "fast")
+    assert build.compiled is not None, [d.format() for d in build.diagnostics]
+    sim = build.simulation()
+    sim.cycle(2)
+    assert [sim.read(f"Main.{name}") for name in ("A0", "A1", "A2", "C0", "C1", "C2")] == [2, 2, 2, True, True, True]
+    sim.write("Main.B1", False)
+    sim.cycle(1)
+    assert [sim.read(f"Main.{name}") for name in ("A0", "A1", "A2", "C1")] == [3, 2, 3, False]

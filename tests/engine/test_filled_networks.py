@@ -20,10 +20,12 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from ladderlab.engine.codegen import chunks, generate
+from ladderlab.engine.codegen.layout import PAGE_SIZE
 from ladderlab.ir import nodes as ir
 from ladderlab.ir.lower_project import lower_project
 from ladderlab.model.project import Project
-from tests.engine.test_block_templates import _project  # (the same program of LD networks)
+from tests.engine.test_block_templates import _element, _project  # (the same program of LD networks)
+from tests.support import ld_shapes_project
 
 #: the pools the variables rotate in: the last BOOLs live on the second page of slots
 BOOLS = ["B0", "B1", "B2", "P0", "P1"]
@@ -90,6 +92,51 @@ def test_networks_filled_from_a_template_give_the_code_of_their_own_shape(
     with pytest.MonkeyPatch.context() as patched:
         patched.setattr(chunks, "CHUNK_STATEMENTS", chunk)
         _same_without_filled(_project(networks))
+
+
+#: BOOLs on three pages of slots: a network's variables on one page or on several, its template's first on others
+PAGED = ["B0", "B1", "P0", "P1", "Q0", "Q1"]
+
+
+def _paged_project(networks: list[list[tuple[str, str, str]]]) -> Project:
+    fillers = [" ".join(f"{page}{i}," for i in range(PAGE_SIZE)) for page in ("F", "H")]
+    declarations = (
+        f"VAR\n  B0, B1 : BOOL; I0, I1 : INT; T0, T1 : TON;\n  {fillers[0]} P0, P1 : BOOL;\n  {fillers[1]} Q0, Q1 : BOOL;\n"
+        "END_VAR\nVAR_EXTERNAL G1 : BOOL; END_VAR"
+    )
+    return ld_shapes_project(declarations, networks, _element)  # type: ignore[return-value]
+
+
+@settings(max_examples=int(os.environ.get("TEMPLATE_EXAMPLES", "25")), deadline=None)
+@given(
+    shape=st.lists(
+        st.one_of(
+            st.tuples(st.just("contact"), st.sampled_from(range(len(PAGED))), st.sampled_from(["no", "nc", "p"])),
+            st.tuples(st.just("coil"), st.sampled_from(range(len(PAGED))), st.sampled_from(["normal", "set", "n"])),
+            st.tuples(st.just("ton"), st.sampled_from(["T0", "T1"]), st.sampled_from(["T#5ms", "T#1s"])),
+        ),
+        min_size=1,
+        max_size=4,
+    ),
+    turns=st.lists(st.integers(0, len(PAGED) - 1), min_size=2, max_size=12),
+    chunk=st.sampled_from([4, 15, chunks.CHUNK_STATEMENTS]),
+)
+def test_the_networks_of_a_template_share_its_code_whatever_pages_their_variables_live_on(
+    shape: list[tuple[str, object, str]], turns: list[int], chunk: int
+) -> None:
+    """A filled network's code is its template's first network's with its own variables' codes (``ll_p2.v_Q0`` for
+    ``self.v_B0``) and it loads the pages those name (codegen/templates.py, ``_Twin``): each network here moves the
+    shape's BOOLs ``turn`` places along variables of three pages."""
+    networks = [
+        [
+            (kind, PAGED[(a + turn) % len(PAGED)] if isinstance(a, int) else a, b)  # type: ignore[operator]
+            for kind, a, b in shape
+        ]
+        for turn in turns
+    ]
+    with pytest.MonkeyPatch.context() as patched:
+        patched.setattr(chunks, "CHUNK_STATEMENTS", chunk)
+        _same_without_filled(_paged_project(networks))
 
 
 @pytest.mark.parametrize("timed", [1, 4])

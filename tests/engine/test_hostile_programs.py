@@ -10,6 +10,7 @@ import threading
 
 import pytest
 
+from ladderlab.engine.codegen.layout import PAGE_SIZE
 from ladderlab.model import Pou, Project, Task
 from ladderlab.simulation.build import build_project
 
@@ -177,6 +178,19 @@ def test_a_case_with_3000_labels_and_an_if_with_3000_branches(variant: str) -> N
     assert seen == [(0, 0), (2998, 4497), (5996, 8994)]
     sim.cycle(1)
     assert (sim.read("Main.y"), sim.read("Main.z")) == (-1, -1)
+
+
+@pytest.mark.parametrize("variant", VARIANTS)
+def test_a_long_if_chain_in_a_program_of_two_pages_of_slots(variant: str) -> None:
+    """An IF with more than 64 branches continues in flat groups behind a flag saying no branch was taken yet; the
+    flag was the local ``ll_p1``, which also holds the second page of a large PROGRAM's slots, so the program's
+    next read of a slot there failed with an internal error."""
+    filler = ", ".join(f"f{i}" for i in range(PAGE_SIZE))
+    chain = "IF k = 0 THEN y := 1;\n" + "".join(f"ELSIF k = {i} THEN y := y + {i};\n" for i in range(1, 80))
+    body = chain + "END_IF;\ny := y + 1;\nk := k + 1;"
+    project = Project(name="p", pous=[st("Main", f"VAR k : INT := 70; {filler} : BOOL; y : INT; END_VAR", body)])
+    assert run(project, variant, 1, "Main.y", "Main.k") == [71, 71]  # the ELSIF k = 70 branch, then y + 1
+    assert run(project, variant, 2, "Main.y", "Main.k") == [71 + 71 + 1, 72]
 
 
 @pytest.mark.parametrize("variant", VARIANTS)

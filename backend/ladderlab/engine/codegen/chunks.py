@@ -17,7 +17,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from ...ir import nodes as ir
-from .mentions import walk
+from .mentions import walk, walk_filled
 
 #: IR statements (nested ones included) per chunk function.
 CHUNK_STATEMENTS = 1500
@@ -49,7 +49,9 @@ def plan(blocks: list[ir.Block], chunked: bool) -> ChunkPlan:
     size, jumps, returns = 0, False, False
     for block in blocks:
         statements = 0
-        for s in walk(block.statements):
+        # (a network the LD lowering filled in from a template nests statements in IFs only: walked without the
+        # generators, as a 50,000-network body's are)
+        for s in walk_filled(block.statements, []) if block.filled is not None else walk(block.statements):
             statements += 1
             kind = type(s)
             if kind is ir.Jump:

@@ -108,12 +108,12 @@ def _emit_dispatch(module: ModuleContext, code: Source) -> None:
 
 def _pieces(src: Source) -> list[tuple[int, int, int]]:
     """(first line, start, end character in ``src.text()``) of each piece."""
-    starts = sorted({0, *(b for b in src.breaks if b < len(src.lines))})
-    first_lines, offsets, at = set(starts), [], 0
-    for number, line in enumerate(src.lines):
-        if number in first_lines:
-            offsets.append(at)
-        at += len(line) + 1
+    lines = src.lines
+    starts = sorted({0, *(b for b in src.breaks if b < len(lines))})
+    offsets, at = [], 0
+    for start, end in zip(starts, [*starts[1:], len(lines)]):
+        offsets.append(at)
+        at += sum(map(len, lines[start:end])) + end - start  # (each line and its newline)
     offsets.append(at)
     return list(zip(starts, offsets, offsets[1:]))
 

@@ -222,27 +222,52 @@ def _declared_again(module: ModuleContext, target: str, ty: t.IrType, initial: o
 
 def _plain_inits(module: ModuleContext, places: list, target, owner: str, src: Source) -> None:
     """Initialise slots; consecutive slots of one object with one immutable literal value share one ``ll_fill``
-    (a 10,000-network POU has runs of a dozen FALSE slots: one call compiles much faster than the assignments)."""
+    (a 10,000-network POU has runs of a dozen FALSE slots: one call compiles much faster than the assignments).
+    ``target(place)`` is ``<the object holding the place's page>.<its attribute>``."""
     run: list[str] = []  # attributes of ``holder``
     holder = shared = ""
+    page, mine = -1, ""  # the page of the last place and the object holding it
+    #: the value of a slot with a scalar initial value (the lowering gives one to each slot declared without: its
+    #: type's default) and whether it is immutable, by its type's identity and that value: the same for each slot of
+    #: that type object (a 50,000-network POU has 200,000 slots of a handful of types and values; each entry holds its
+    #: type, which so keeps its id)
+    values: dict[tuple[int, type, object], tuple[t.IrType, str, bool]] = {}
     for place in places:
-        value = _init_value(module, place.slot, owner)
-        if value is None:
-            continue
-        code = target(place)
-        mine, _, attr = code.rpartition(".")  # the object (``self``, ``ll_p2``, ``G``) and the attribute
-        immutable = _immutable(value)
+        slot = place.slot
+        initial = slot.initial
+        key = (
+            (id(slot.type), type(initial), initial)
+            if type(initial) in _SHARED and slot.var_class != "VAR_IN_OUT"
+            else None
+        )
+        known = values.get(key) if key is not None else None
+        if known is None:
+            value = _init_value(module, slot, owner)
+            if value is None:
+                continue
+            immutable = _immutable(value)
+            if key is not None:
+                values[key] = slot.type, value, immutable
+        else:
+            _, value, immutable = known
+        if place.page != page:
+            page, mine = place.page, target(place).rpartition(".")[0]
         if run and (not immutable or value != shared or mine != holder):
             _fill(holder, run, shared, src)
             run = []
         if immutable:
-            run.append(attr)
+            run.append(place.attr)
             holder, shared = mine, value
         else:
-            src.line(f"{code} = {value}")
+            src.line(f"{mine}.{place.attr} = {value}")
     if run:
         _fill(holder, run, shared, src)
     _pin_constants(module, places, target, src)
+
+
+#: the kinds of initial value whose slots of one type object share their initialiser's text (not floats: -0.0 and 0.0
+#: are equal keys; the kinds apart: 1 and True are too)
+_SHARED = (type(None), bool, int, str)
 
 
 def _pin_constants(module: ModuleContext, places: list[Place], target: Callable[[Place], str], src: Source) -> None:

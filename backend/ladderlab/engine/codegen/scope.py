@@ -49,8 +49,11 @@ class Scope:
         #: the variables whose references die with the call (framed_variables): its calls have a Frame
         self.framed: set[str] = set()
         self.pages_used: set[int] = set()
-        self._temps = 0
-        self._roots: dict[tuple[str, str], tuple[str, t.IrType, int]] = {}
+        #: the prefix of each numbered temporary made (``temp``), the first's first
+        self.temp_prefixes: list[str] = []
+        #: ``placed`` by the name of a local variable and of a global one
+        self._locals: dict[str, tuple[str, t.IrType, int]] = {}
+        self._globals: dict[str, tuple[str, t.IrType, int]] = {}
         #: upper-case slot name -> the local it lives in (fast variant; ``temp_locals``)
         self.temp_locals: dict[str, str] = {} if self.function else temp_locals(module, pou)
         self.temps_used: set[str] = set()  # of ``temp_locals``, by the chunk being generated
@@ -59,8 +62,8 @@ class Scope:
         self.templates = BlockTemplates() if not (module.debug or self.function) else None
 
     def temp(self, prefix: str) -> str:
-        self._temps += 1
-        return f"ll_{prefix}{self._temps}"
+        self.temp_prefixes.append(prefix)
+        return f"ll_{prefix}{len(self.temp_prefixes)}"
 
     def slot(self, var: ir.Var) -> ir.Slot:
         if var.scope == "global":
@@ -95,14 +98,29 @@ class Scope:
     def placed(self, var: ir.Var) -> tuple[str, t.IrType, int]:
         """``root``'s source and type, and the page its slot lives on, without noting the page or temporary as
         used by the chunk being generated."""
-        key = (var.scope, var.name)
-        found = self._roots.get(key)
+        roots = self._locals if var.scope == "local" else self._globals
+        found = roots.get(var.name)
         if found is None:
-            found = self._roots[key] = self._root(var)
+            found = roots[var.name] = self._root(var)
         return found
 
     def _root(self, var: ir.Var) -> tuple[str, t.IrType, int]:
-        """``root``'s source and type, and the page its slot lives on (0: ``self``, a local or a global)."""
+        """``root``'s source and type, and the page its slot lives on (0: ``self``, a local or a global). (Asked once
+        for each of a 50,000-network POU's 200,000 variables: a slot of the POU's own, the most, is found first.)"""
+        upper = var.name.upper()
+        slot = self.slots.get(upper) if var.scope == "local" else None
+        if (
+            slot is not None
+            and slot.address is None
+            and slot.var_class != "VAR_IN_OUT"
+            and not self.function
+            and var.name != ir.SELF
+        ):
+            local = self.temp_locals.get(upper)
+            if local is not None:
+                return local, slot.type, 0
+            place = self.layout.places[upper]  # type: ignore[union-attr]  # a PROGRAM / FB has a layout
+            return f"{_page_owner(place.page)}.{place.attr}", slot.type, place.page
         if self._self(var):
             return "self", t.FbInstance(self.pou.name.upper()), 0
         slot = self.slot(var)
@@ -117,15 +135,8 @@ class Scope:
                 return names.slot(slot.name), slot.type, 0
             key = names.escape(slot.name)
             return f"ll_c_{key}[ll_k_{key}]", slot.type, 0
-        upper = slot.name.upper()
-        if self.function:
-            attr = names.slot(slot.name)
-            return (f"{attr}[0]" if upper in self.boxed else attr), slot.type, 0
-        local = self.temp_locals.get(upper)
-        if local is not None:
-            return local, slot.type, 0
-        place = self.layout.places[upper]  # type: ignore[union-attr]  # a PROGRAM / FB has a layout (by the name found)
-        return f"{_page_owner(place.page)}.{place.attr}", slot.type, place.page
+        attr = names.slot(slot.name)  # (what is left: a FUNCTION's own variable, a local)
+        return (f"{attr}[0]" if slot.name.upper() in self.boxed else attr), slot.type, 0
 
     def slot_source(self, name: str) -> str:
         """Where the slot ``name`` of this PROGRAM / FUNCTION_BLOCK lives (its page noted as used)."""

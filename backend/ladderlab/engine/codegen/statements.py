@@ -448,9 +448,10 @@ class Statements:
         """``if``/``elif``/``else`` over (condition, body) pairs. CPython's compiler recurses once per ``elif``,
         and a condition computed on lines of its own cannot follow an ``elif``, so a chain longer than
         CHAIN_BRANCHES, or one with such a condition after its first branch, continues in flat groups:
-        ``if ll_pN:``, where ``ll_pN`` says that no branch has been taken yet."""
+        ``if ll_pendingN:``, where ``ll_pendingN`` says that no branch has been taken yet (not ``ll_pN``: that is
+        the local holding page N of a POU's slots)."""
         split = [i for i, ((_, before), _) in enumerate(branches) if i and (i % CHAIN_BRANCHES == 0 or before.lines)]
-        pending = self.scope.temp("p") if split else None
+        pending = self.scope.temp("pending") if split else None
         if pending:
             self.src.line(f"{pending} = False")
         starts = [0, *split]

@@ -3,7 +3,8 @@
 A large LD/FBD body repeats a few network shapes with other variables: ``--| A1 |--|/ B1 |--( C1 )--`` and
 ``--| A2 |--|/ B2 |--( C2 )--`` differ in nothing but the slots they name. ``BlockTemplates`` emits the first
 network of a shape as ``Statements`` does and keeps its lines with each variable's code (``self.v_A1``) as a
-hole; a later network of that shape gets those lines with its own variables' codes (``self.v_A2``), its
+hole, and each numbered temporary it made (``ll_x1``, ``Scope.temp``) as one too; a later network of that shape
+gets those lines with its own variables' codes (``self.v_A2``) and temporaries made anew (``ll_x7``), its
 statements' origins registered in the same order and its lines tagged as the first network's were.
 
 The shape (``_Shape``) is everything the emitted text may depend on: each statement and expression node with all
@@ -12,23 +13,26 @@ indentation, and for each variable the page of its slot (``self.v_X``, ``ll_p2.v
 same (``x AND x``, a read forwarded from the local just stored). Only the variables' names are left out. A network
 is emitted as usual, and its shape never reused, when anything else could differ: a variable that is not a slot
 of the POU named plainly (a global, an in-out, a located variable, an escaped name), a variable's name left in
-the text outside its code (a message naming it), a code of no variable of the network, a statement this
-module does not model (loops, jumps, returns), or a side effect of the emission besides the origins and the
-pages and temporaries used (a diagnostic, a bound constant, a numbered temporary, an outlined body). Only the
-fast variant, which records no probe, is filled in (tests/engine/test_block_templates.py compares the module,
-its line origins and its origins with those of the plain emission).
+the text outside its code (a message naming it) or its attribute (an in-out's reference ``(self, 'v_X')``), a code
+of no variable of the network, a statement this module does not model (loops, jumps, returns), or a side effect
+of the emission besides the origins, the pages and temporaries used and the numbered temporaries made (a
+diagnostic, a bound constant, an outlined body). Only the fast variant, which records no probe, is filled in
+(tests/engine/test_block_templates.py compares the module, its line origins and its origins with those of the
+plain emission).
 
 A network the LD lowering filled in from a template of its own (``ir.Block.filled``) is not walked for its shape:
 the lowering's networks of one template differ only in their variables (and origins and probe names), so its shape
-is that of the first of them whose variables have the same types and pages and whose statements have the same
-dead stores, folds and stored inputs (``_Filled``, ``_Twin``; tests/engine/test_filled_networks.py compares the
-code with that of the same IR without ``filled``).
+is that of the first of them whose variables have the same types and whose statements have the same dead stores,
+folds and stored inputs (``_Filled``, ``_Twin``; tests/engine/test_filled_networks.py compares the code with that
+of the same IR without ``filled``), on whichever pages its variables live: a variable's code names its page
+(``ll_p2.v_X``), so the pages the code loads are those its codes name, the first network's shared variables' and
+the network's own (the template is kept only where its pages are just those).
 """
 
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
 from ...ir import nodes as ir
@@ -41,8 +45,19 @@ if TYPE_CHECKING:
 #: A variable's code in a line (split out of it) and a word (a name) in what is left
 _CODES = re.compile(r"(?<![\w.])((?:self|ll_p\d+|G\d*)\.v_\w+)")
 _WORD = re.compile(r"[A-Za-z0-9_]+")
+#: a page's local outside a variable's code (``(ll_p2, 'v_X')``): a twin on another page would need another text
+_PAGE_TEXT = re.compile(r"\bll_p\d")
 _PROBE = ("probe",)
 _DEAD = ("dead",)
+
+
+#: a template's lines to fill in (``_Template.format``): format texts of lines with holes, tuples of lines without
+_Text = list[str | tuple[str, ...]]
+
+
+def _escaped(code: str | int) -> str:
+    """``code`` in a format text: itself (braces doubled), or the hole of the code at that position."""
+    return code.replace("{", "{{").replace("}", "}}") if isinstance(code, str) else f"{{{code}}}"
 
 
 class _Unshaped(Exception):
@@ -56,16 +71,49 @@ class _Template:
     statements: list[int]  # the walk positions of the statements that registered an origin, in order
     temps: frozenset[str]  # the temporaries' locals and the pages the block's code uses
     pages: frozenset[int]
+    temporaries: list[str]  # the prefixes of the numbered temporaries it makes, in order (``Scope.temp``)
+    text: _Text = field(init=False)  # ``lines`` to fill in with the block's codes (``format``)
+
+    def __post_init__(self) -> None:
+        self.text = self.format([])
+
+    def format(self, codes: list[str | int]) -> _Text:
+        """``lines`` to fill in (``_fill``): each run of lines with holes as one ``str.format`` text (filled in at
+        once), each hole ``i`` by ``codes[i]`` (a code itself, or the position of the code filled in; ``i`` itself
+        beyond ``codes``); each run of lines without as those lines, the same strings in every network filled in."""
+        text: _Text = []
+        for line in self.lines:
+            last = text[-1] if text else None
+            if len(line) == 1:  # a line without a hole (``_holes`` split nothing off)
+                whole = line[0]
+                assert isinstance(whole, str)
+                if isinstance(last, tuple):
+                    text[-1] = last + (whole,)
+                else:
+                    text.append((whole,))
+                continue
+            filled = "".join(
+                _escaped(part if isinstance(part, str) else codes[part] if part < len(codes) else part) for part in line
+            )
+            if isinstance(last, str):
+                text[-1] = f"{last}\n{filled}"
+            else:
+                text.append(filled)
+        return text
 
 
 @dataclass(slots=True)
 class _Twin:
     """What the first network filled in from a lowering template found (``BlockTemplates.emit``): the template of
-    its shape (None: emitted as usual) and its codes in the template's order, each the position of one of the
-    network's variables (``ir.Filled.variables``) or the code of another variable of its statements."""
+    its shape (None: emitted as usual); its text (``_Template.format``), with the codes of the variables of its
+    statements other than the network's own written in and the network's own (``ir.Filled.variables``) as holes by
+    their position among those; the positions the text fills in, and the pages the other codes name (a twin loads
+    those and its own variables' pages: ``_Filled``)."""
 
     template: _Template | None
-    codes: list[str | int]
+    text: _Text = field(default_factory=list)
+    own: list[int] = field(default_factory=list)
+    pages: frozenset[int] = frozenset()
 
 
 class BlockTemplates:
@@ -78,8 +126,8 @@ class BlockTemplates:
     def emit(self, st: Statements, block: ir.Block, own_group: bool) -> None:
         """``st.statements(block.statements, own_group)``, from the block's template where there is one. A network
         the lowering filled in from a template of its own (``block.filled``) has the shape of the first network
-        filled from that template whose variables have the same pages and types and whose statements the same
-        liveness and stored inputs (``_Filled``): its shape is not computed again."""
+        filled from that template whose variables have the same types and whose statements the same liveness and
+        stored inputs (``_Filled``), whichever pages its variables live on: its shape is not computed again."""
         filled = _Filled.of(st, block) if block.filled is not None else None
         if filled is None:
             self._emit(st, block, own_group)
@@ -87,64 +135,74 @@ class BlockTemplates:
         key = (st.src.depth, st.blocks, own_group, block.filled, filled.key)
         twin = self._twins.get(key)
         if twin is None:
-            self._twins[key] = self._emit(st, block, own_group, filled.codes)
+            self._twins[key] = self._emit(st, block, own_group, filled)
         elif twin.template is None:
             st.statements(block.statements, own_group=own_group)
         else:
-            codes = filled.codes
-            _fill(
-                st,
-                twin.template,
-                [code if isinstance(code, str) else codes[code] for code in twin.codes],
-                filled.walked,
-            )
+            pages = filled.pages
+            used = {pages[i] for i in twin.own}
+            used.discard(0)
+            _fill(st, twin.template, twin.text, filled.codes, filled.walked, twin.pages.union(used))
 
-    def _emit(self, st: Statements, block: ir.Block, own_group: bool, variables: list[str] | None = None) -> _Twin:
-        """``emit`` by the block's shape; what it found, for the twins of a filled network (``variables``: the codes
-        of its variables)."""
+    def _emit(self, st: Statements, block: ir.Block, own_group: bool, filled: _Filled | None = None) -> _Twin:
+        """``emit`` by the block's shape; what it found, for the twins of a filled network (``filled``)."""
         shape = _Shape(st)
         try:
             key = (st.src.depth, st.blocks, own_group, shape.statements(block.statements))
             template = self._found.get(key, False)
         except (_Unshaped, TypeError):  # (TypeError: an unhashable field)
             st.statements(block.statements, own_group=own_group)
-            return _Twin(None, [])
+            return _Twin(None)
         if isinstance(template, _Template):
-            _fill(st, template, list(shape.codes), shape.walked)
+            _fill(st, template, template.text, list(shape.codes), shape.walked, template.pages)
         elif template is None:
             st.statements(block.statements, own_group=own_group)
         else:  # a new shape: emit it and learn it
             template = self._found[key] = _learn(st, block, own_group, shape)
-        if variables is None:
-            return _Twin(template, [])
-        position = {code: i for i, code in enumerate(variables)}
-        return _Twin(template, [position.get(code, code) for code in shape.codes])
+        if filled is None or template is None:
+            return _Twin(None)
+        position = {code: i for i, code in enumerate(filled.codes)}
+        codes = [position.get(code, code) for code in shape.codes]
+        own = [code for code in codes if isinstance(code, int)]
+        codes += range(len(filled.codes), len(filled.codes) + len(template.temporaries))  # (``_fill`` adds them)
+        shared = frozenset(
+            int(code[4 : code.index(".")]) for code in codes if isinstance(code, str) and code[:4] == "ll_p"
+        )
+        if template.pages != shared.union(filled.pages[i] for i in own).difference((0,)) or any(
+            _PAGE_TEXT.search(part) for parts in template.lines for part in parts if isinstance(part, str)
+        ):  # a page its code uses that none of its codes names: the twins' pages are not known
+            return _Twin(None)
+        return _Twin(template, template.format(codes), own, shared)
 
 
 @dataclass(slots=True)
 class _Filled:
     """A network filled in from a lowering template (``ir.Filled``): what its shape (``_Shape``) holds besides the
-    template (``key``: its variables' types and pages, its statements' liveness and stored inputs), its variables'
-    codes and its statements in ``_Shape``'s order."""
+    template (``key``: its variables' types, its statements' liveness and stored inputs), its variables' codes and
+    pages, and its statements in ``_Shape``'s order. A variable's code names its page (``ll_p2.v_X``), so the pages
+    are not part of the shape: the code uses those of its variables (``_Twin``)."""
 
     key: tuple[Any, ...]
     codes: list[str]
+    pages: list[int]
     walked: list[ir.Stmt]
 
     @staticmethod
     def of(st: Statements, block: ir.Block) -> _Filled | None:
         """None when a variable is not a slot of the POU named plainly (its shape is computed: ``_Shape.var``)."""
         place = st.scope.placed
-        facts: list[tuple[int, int, int]] = []
+        facts: list[tuple[int, int]] = []
         codes: list[str] = []
+        pages: list[int] = []
         filled = block.filled
         assert filled is not None  # (asked only of filled networks)
         for var in filled.variables(block.statements):
             code, ty, page = place(var)
             if not (page or code.startswith("self.v_")) or code.startswith("v_w", code.find(".") + 1):
                 return None  # (not a slot of this POU, or an escaped name: ``_Shape.var``)
-            facts.append((id(var.type), id(ty), page))
+            facts.append((id(var.type), id(ty)))
             codes.append(code)
+            pages.append(page)
         if len(set(codes)) != len(codes):
             return None
         once = st.stored_once
@@ -158,14 +216,15 @@ class _Filled:
             flags = tuple(
                 [(id(s) in dead, folds.get(id(s)), once(s) if type(s) is ir.FbCall else None) for s in walked]
             )
-        return _Filled((tuple(facts), flags), codes, walked)
+        return _Filled((tuple(facts), flags), codes, pages, walked)
 
 
 def _learn(st: Statements, block: ir.Block, own_group: bool, shape: _Shape) -> _Template | None:
     """Emit the block as usual; its template, or None when something besides its text and origins changed."""
     src, module, scope = st.src, st.module, st.scope
     lines, origins, outer = len(src.lines), len(module.origins), src.origin
-    counts = (len(module.diagnostics), len(module.bound), scope._temps, len(st.outlines.lines))
+    counts = (len(module.diagnostics), len(module.bound), len(st.outlines.lines))
+    made = len(scope.temp_prefixes)
     temps, pages = scope.temps_used, scope.pages_used
     scope.temps_used, scope.pages_used = set(), set()
     try:
@@ -175,8 +234,10 @@ def _learn(st: Statements, block: ir.Block, own_group: bool, shape: _Shape) -> _
         temps |= used_temps
         pages |= used_pages
         scope.temps_used, scope.pages_used = temps, pages
-    if counts != (len(module.diagnostics), len(module.bound), scope._temps, len(st.outlines.lines)):
+    if counts != (len(module.diagnostics), len(module.bound), len(st.outlines.lines)):
         return None
+    prefixes = scope.temp_prefixes[made:]  # the numbered temporaries it made: holes too, made anew for each network
+    numbered = [f"ll_{prefix}{made + i}" for i, prefix in enumerate(prefixes, 1)]
     held = st._output_line  # an inlined FB's output store that a following statement may chain onto
     if held is not None and held[0] is src and held[1] == len(src.lines) - 1:  # (Statements._chained): the last line
         return None
@@ -195,19 +256,24 @@ def _learn(st: Statements, block: ir.Block, own_group: bool, shape: _Shape) -> _
             line_origins.append(-1)
         else:
             return None
-    template = _holes(src.lines[lines:], shape)
+    template = _holes(src.lines[lines:], shape, numbered)
     if template is None:
         return None
-    return _Template(template, line_origins, statements, frozenset(used_temps), frozenset(used_pages))
+    return _Template(template, line_origins, statements, frozenset(used_temps), frozenset(used_pages), prefixes)
 
 
-def _holes(lines: list[str], shape: _Shape) -> list[tuple[str | int, ...]] | None:
-    """``lines`` with each variable's code a hole (its index); None when a code of no variable of the block, or a
-    variable's name outside its code (a message naming it), is in them."""
+def _holes(lines: list[str], shape: _Shape, numbered: list[str]) -> list[tuple[str | int, ...]] | None:
+    """``lines`` with each variable's code a hole (its index) and each ``numbered`` temporary one (its index after
+    the codes); None when a code of no variable of the block, or a variable's name or attribute outside its code (a
+    message naming it, a reference ``(self, 'v_X')`` to it), is in them."""
     codes = shape.codes
-    names = {part for code in codes for part in (code.partition(".v_")[2], code.partition(".")[2])}
+    names = {part.upper() for code in codes for part in (code.partition(".v_")[2], code.partition(".")[2])}
+    temporaries = {name: len(codes) + i for i, name in enumerate(numbered)}
+    split = re.compile(rf"(?<!\w)({'|'.join(numbered)})(?!\w)") if numbered else None
     template = []
     for line in lines:
+        if "\n" in line:  # (never a line of code: ``_Template.text`` is split at them)
+            return None
         parts: list[str | int] = []
         for i, piece in enumerate(_CODES.split(line)):
             if i % 2:  # a code
@@ -217,23 +283,34 @@ def _holes(lines: list[str], shape: _Shape) -> list[tuple[str | int, ...]] | Non
                 parts.append(found)
             elif any(word.upper() in names for word in _WORD.findall(piece)):
                 return None
-            else:
+            elif split is None:
                 parts.append(piece)
+            else:
+                parts += [temporaries[part] if k % 2 else part for k, part in enumerate(split.split(piece))]
         template.append(tuple(parts))
     return template
 
 
-def _fill(st: Statements, template: _Template, codes: list[str], walked: list[ir.Stmt]) -> None:
-    """The template's lines with this block's variables' ``codes``, its statements' origins registered in order
-    (``walked``: its statements in ``_Shape``'s order)."""
+def _fill(
+    st: Statements, template: _Template, text: _Text, codes: list[str], walked: list[ir.Stmt], pages: frozenset[int]
+) -> None:
+    """The template's lines (``text``: ``template.text`` or a twin's) with this block's ``codes``, its statements'
+    origins registered in order (``walked``: its statements in ``_Shape``'s order), ``pages`` noted as used."""
     src, module, scope = st.src, st.module, st.scope
     outer = src.origin
-    for parts in template.lines:
-        src.lines.append("".join(part if isinstance(part, str) else codes[part] for part in parts))
-    oids = [module.origin(walked[i].origin, walked[i]) for i in template.statements]
-    src.line_origins.extend(outer if k < 0 else oids[k] for k in template.origins)
+    if template.temporaries:  # (made now: numbered as the plain emission would)
+        codes = [*codes, *[scope.temp(prefix) for prefix in template.temporaries]]
+    lines = src.lines
+    for run in text:
+        if isinstance(run, tuple):
+            lines.extend(run)
+        else:
+            lines.extend(run.format(*codes).split("\n"))
+    origin = module.origin
+    oids = [origin(walked[i].origin, walked[i]) for i in template.statements]
+    src.line_origins.extend([outer if k < 0 else oids[k] for k in template.origins])
     scope.temps_used |= template.temps
-    scope.pages_used |= template.pages
+    scope.pages_used |= pages
     st._output_line = None  # (as its shape's first network left it: ``_learn``)
 
 
