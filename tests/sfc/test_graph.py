@@ -155,3 +155,29 @@ def test_a_forward_jump_round_trips():
     )
     rebuilt, unreachable = graph_chart(*imported(chart))
     assert unreachable == [] and edges(rebuilt) == edges(chart)
+
+
+def loop_back_into_a_branch() -> list[dict]:
+    """An alternative after S1 meeting at the simultaneous divergence S25 | S33, whose join jumps back into the first
+    branch (S4); S8, reached only from S4, belongs to that branch (minimised from a hypothesis failure)."""
+    return [
+        step("S1"),
+        alt(
+            [tr("c3"), step("S4"), alt([tr("c6")], [tr("c7"), step("S8"), tr("c10"), jump("S1")])],
+            [tr("c22")],
+        ),
+        par([step("S25")], [step("S33")]),
+        tr("c38"),
+        jump("S4"),
+    ]
+
+
+def test_a_step_after_a_loop_back_into_a_branch_is_drawn_in_that_branch():
+    """S8 is not placed after the meeting point (the chart after it never reaches S8 but through S4, which the first
+    branch places). The rebuild once refused the graph: "a simultaneous divergence activates step S25, which is also
+    reached another way"."""
+    chart = SfcChart.model_validate({"elements": loop_back_into_a_branch()})
+    assert chart_graph(chart).problems == []
+    rebuilt, unreachable = graph_chart(*imported(chart))
+    assert unreachable == [] and edges(rebuilt) == edges(chart)
+    assert chart_graph(rebuilt).problems == []

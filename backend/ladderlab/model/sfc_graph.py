@@ -478,9 +478,11 @@ class _Rebuilder:
 
     def _downstream(self, meet: frozenset[str], reserved: frozenset[str]) -> frozenset[str]:
         """The steps after an alternative's meeting point, which a branch reaching one jumps to (they are placed
-        after the alternative); not those that lead back to the meeting point (a loop): a branch places them."""
+        after the alternative); not those that lead back to the meeting point (a loop), nor those reached from the
+        meeting point only through such a step: a branch places them (after the loop's step)."""
         after = self._fresh_steps(meet, reserved - meet)
-        return meet | frozenset(name for name in after if name in meet or not self._leads_to(name, meet, reserved))
+        loops = frozenset(name for name in after if name not in meet and self._leads_to(name, meet, reserved))
+        return meet | frozenset(self._fresh_steps(meet, (reserved - meet) | loops))
 
     def _leads_to(self, name: str, meet: frozenset[str], reserved: frozenset[str]) -> bool:
         blocked = (self.placed | reserved) - meet
