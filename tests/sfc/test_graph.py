@@ -181,3 +181,17 @@ def test_a_step_after_a_loop_back_into_a_branch_is_drawn_in_that_branch():
     rebuilt, unreachable = graph_chart(*imported(chart))
     assert unreachable == [] and edges(rebuilt) == edges(chart)
     assert chart_graph(rebuilt).problems == []
+
+
+def test_an_alternative_whose_other_branch_loops_through_its_own_simultaneous_divergence_meets_after_it():
+    """In the first branch of P4, S5's alternative either goes on to S17 or opens S10 | S12, whose join jumps back
+    to S5: that join is no way out of the branch, so the alternative meets at S17, which ends the simultaneous branch
+    (the rebuild once drew S17 inside the alternative, leaving P4's branch without a last step)."""
+    loop = [tr("c8"), par([step("S10")], [step("S12")]), tr("c14"), jump("S5")]
+    start = [step("S1"), tr("c3"), par([step("S5"), alt([tr("c7")], loop), step("S17")], [step("S19")])]
+    for ending in ([], [tr("c21"), step("S22")]):  # the chart ends in the branches, or they join
+        chart = SfcChart.model_validate({"elements": [*start, *ending]})
+        assert chart_graph(chart).problems == []
+        rebuilt, unreachable = graph_chart(*imported(chart))
+        assert unreachable == [] and edges(rebuilt) == edges(chart)
+        assert chart_graph(rebuilt).problems == []

@@ -500,14 +500,18 @@ class _Rebuilder:
         return False
 
     def _escapes(self, start: list[str], reserved: frozenset[str], converge: frozenset[str] | None) -> bool:
-        """Does a branch lead somewhere new (a last step, where its enclosing alternative meets, a join) rather
-        than only back to steps already placed?"""
+        """Does a branch lead somewhere new (a last step, where its enclosing alternative meets, the join of an
+        enclosing simultaneous divergence) rather than only back to steps already placed? (The join of a
+        simultaneous divergence the branch itself opens, all of whose steps it reaches, is no way out.)"""
         if frozenset(start) == converge:
             return True
-        for name in self._fresh_steps(start, reserved):
+        fresh = self._fresh_steps(start, reserved)
+        for name in fresh:
             leaving = [t for t in self.transitions if name in t.sources]
-            if not leaving or any(frozenset(t.targets) == converge or len(t.sources) > 1 for t in leaving):
-                return True  # a last step, the enclosing meeting point, the join of a simultaneous divergence
+            if not leaving or any(
+                frozenset(t.targets) == converge or not set(t.sources) <= set(fresh) for t in leaving
+            ):
+                return True  # a last step, the enclosing meeting point, the join of an enclosing divergence
         return False
 
     def _reachable(
