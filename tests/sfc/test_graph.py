@@ -195,3 +195,31 @@ def test_an_alternative_whose_other_branch_loops_through_its_own_simultaneous_di
         rebuilt, unreachable = graph_chart(*imported(chart))
         assert unreachable == [] and edges(rebuilt) == edges(chart)
         assert chart_graph(rebuilt).problems == []
+
+
+def test_an_alternative_no_branch_of_which_reaches_the_tried_meeting_point_tries_the_next():
+    """S1's branches could meet at S17 (both reach it, and a jump goes to it) or at S45; at S17 no branch comes
+    together (the first jumps to it from inside, the second to S45), so S17 was kept for after the alternative but
+    never drawn (the rebuild once named it unreachable): they meet at S45."""
+    chart = SfcChart.model_validate(
+        {
+            "elements": [
+                step("S1"),
+                alt(
+                    [
+                        tr("c3"),
+                        step("S5"),
+                        alt([tr("c12"), step("S13"), tr("c15")], [tr("c16"), step("S17"), tr("c19")], [tr("c24")]),
+                    ],
+                    [tr("c32")],
+                ),
+                step("S45"),
+                alt([tr("c53")], [tr("c59"), jump("S17")]),
+                step("S63"),
+            ]
+        }
+    )
+    assert chart_graph(chart).problems == []
+    rebuilt, unreachable = graph_chart(*imported(chart))
+    assert unreachable == [] and edges(rebuilt) == edges(chart)
+    assert chart_graph(rebuilt).problems == []

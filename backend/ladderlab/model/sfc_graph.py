@@ -409,7 +409,8 @@ class _Rebuilder:
         last: bool,
     ) -> tuple[list[SfcElement], _End] | None:
         """The alternative divergence of ``outs`` meeting at ``meet``; None when a branch would end with a step (a
-        chart's alternative branches end with a transition or a jump) and another meeting point may be tried."""
+        chart's alternative branches end with a transition or a jump), or no branch reaches ``meet`` (nothing would
+        place the steps kept for after it), and another meeting point may be tried."""
         inner = reserved | (self._downstream(meet, reserved) if meet else frozenset())
         branches, joined = [], False
         for t in outs:
@@ -424,8 +425,10 @@ class _Rebuilder:
             joined = joined or end.converge is not None
             branches.append([t.transition, *rest])
         alternative = SfcAlternative(id=self.ids.new("A"), branches=branches)
-        if meet is None or not joined:
+        if meet is None:
             return [alternative], _End()
+        if not joined:
+            return None
         rest, end = self.from_steps_position(sorted(meet, key=list(self.steps).index), reserved, converge)
         final = end.join is None and end.converge is None  # (else what comes after is placed further out)
         if final and not last and not (inner - reserved) <= self.placed:
