@@ -223,3 +223,16 @@ def test_an_alternative_no_branch_of_which_reaches_the_tried_meeting_point_tries
     rebuilt, unreachable = graph_chart(*imported(chart))
     assert unreachable == [] and edges(rebuilt) == edges(chart)
     assert chart_graph(rebuilt).problems == []
+
+
+def test_a_simultaneous_branch_is_rebuilt_to_end_with_a_step():
+    """S5's alternative in the first branch of P4 could meet at S12 (both branches reach it) and go on with S12's
+    loop back to S5, but then the simultaneous branch would end with that jump (the rebuild once drew it so,
+    SFC-UNSAFE): it meets at S8 and the branch ends with S28, as drawn."""
+    loop = alt([tr("c10")], [tr("c11"), step("S12"), tr("c14"), jump("S5")])
+    first = [step("S5"), alt([tr("c7"), step("S8"), loop], [tr("c25"), jump("S12")]), step("S28")]
+    chart = SfcChart.model_validate({"elements": [step("S1"), tr("c3"), par(first, [step("S30")])]})
+    assert chart_graph(chart).problems == []
+    rebuilt, unreachable = graph_chart(*imported(chart))
+    assert unreachable == [] and edges(rebuilt) == edges(chart)
+    assert chart_graph(rebuilt).problems == []

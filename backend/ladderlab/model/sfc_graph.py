@@ -13,7 +13,8 @@ and jumps to named steps for loops; a graph no chart can draw is refused with th
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Iterable, Iterator
+from contextlib import contextmanager
 from dataclasses import dataclass, field
 
 from .sfc import SfcAlternative, SfcChart, SfcElement, SfcJump, SfcParallel, SfcStep, SfcTransition, walk
@@ -292,6 +293,7 @@ class _Rebuilder:
                 raise UnstructuredChart(f"transition {t.transition.id} must come from a step and lead to a step")
         self.placed: set[str] = set()
         self.used_transitions: set[int] = set()
+        self.simultaneous = False  # the sequence being built is a simultaneous branch (it must end with a step)
         taken = {s.step.id for s in steps} | {t.transition.id for t in transitions}
         self.ids = _IdMaker(taken)
 
@@ -306,6 +308,15 @@ class _Rebuilder:
             raise UnstructuredChart("the chart has no initial step")
         elements, _ = self.from_steps_position([initials[0]], frozenset())
         return SfcChart(elements=elements)
+
+    @contextmanager
+    def branches_of(self, simultaneous: bool) -> Iterator[None]:
+        """While the branches of a divergence are built (simultaneous or alternative ones)."""
+        outer, self.simultaneous = self.simultaneous, simultaneous
+        try:
+            yield
+        finally:
+            self.simultaneous = outer
 
     def unreachable(self) -> list[str]:
         return [s.step.name for name, s in self.steps.items() if name not in self.placed]
@@ -330,10 +341,11 @@ class _Rebuilder:
                     "another way"
                 )
         branches, ends = [], []
-        for name in targets:
-            branch, end = self.from_steps_position([name], reserved)
-            branches.append(branch)
-            ends.append(end)
+        with self.branches_of(simultaneous=True):
+            for name in targets:
+                branch, end = self.from_steps_position([name], reserved)
+                branches.append(branch)
+                ends.append(end)
         parallel = SfcParallel(id=self.ids.new("P"), branches=branches)
         joins = {end.join for end in ends}
         if joins == {None} and all(end.converge is None for end in ends):
@@ -409,21 +421,23 @@ class _Rebuilder:
         last: bool,
     ) -> tuple[list[SfcElement], _End] | None:
         """The alternative divergence of ``outs`` meeting at ``meet``; None when a branch would end with a step (a
-        chart's alternative branches end with a transition or a jump), or no branch reaches ``meet`` (nothing would
-        place the steps kept for after it), and another meeting point may be tried."""
+        chart's alternative branches end with a transition or a jump), no branch reaches ``meet`` (nothing would
+        place the steps kept for after it) or the simultaneous branch it lies in would not end with a step, and
+        another meeting point may be tried."""
         inner = reserved | (self._downstream(meet, reserved) if meet else frozenset())
         branches, joined = [], False
-        for t in outs:
-            rest, end = self.from_steps_position(t.targets, inner, meet)
-            if end.join is not None:
-                raise UnstructuredChart(
-                    f"the alternative branch of transition {t.transition.id} ends a simultaneous branch the others "
-                    "do not"
-                )
-            if rest and isinstance(rest[-1], (SfcStep, SfcParallel)) and not last:
-                return None
-            joined = joined or end.converge is not None
-            branches.append([t.transition, *rest])
+        with self.branches_of(simultaneous=False):
+            for t in outs:
+                rest, end = self.from_steps_position(t.targets, inner, meet)
+                if end.join is not None:
+                    raise UnstructuredChart(
+                        f"the alternative branch of transition {t.transition.id} ends a simultaneous branch the "
+                        "others do not"
+                    )
+                if rest and isinstance(rest[-1], (SfcStep, SfcParallel)) and not last:
+                    return None
+                joined = joined or end.converge is not None
+                branches.append([t.transition, *rest])
         alternative = SfcAlternative(id=self.ids.new("A"), branches=branches)
         if meet is None:
             return [alternative], _End()
@@ -433,7 +447,10 @@ class _Rebuilder:
         final = end.join is None and end.converge is None  # (else what comes after is placed further out)
         if final and not last and not (inner - reserved) <= self.placed:
             return None  # a branch jumped to a step after the meeting point that the chart after it never places
-        return [alternative, *rest], end
+        drawn: list[SfcElement] = [alternative, *rest]
+        if final and not last and self.simultaneous and not isinstance(drawn[-1], (SfcStep, SfcParallel)):
+            return None  # the simultaneous branch would end with a jump: its join would wait for ever
+        return drawn, end
 
     def meeting_points(
         self, outs: list[ImportedTransition], reserved: frozenset[str], converge: frozenset[str] | None
