@@ -155,3 +155,84 @@ def test_a_forward_jump_round_trips():
     )
     rebuilt, unreachable = graph_chart(*imported(chart))
     assert unreachable == [] and edges(rebuilt) == edges(chart)
+
+
+def loop_back_into_a_branch() -> list[dict]:
+    """An alternative after S1 meeting at the simultaneous divergence S25 | S33, whose join jumps back into the first
+    branch (S4); S8, reached only from S4, belongs to that branch (minimised from a hypothesis failure)."""
+    return [
+        step("S1"),
+        alt(
+            [tr("c3"), step("S4"), alt([tr("c6")], [tr("c7"), step("S8"), tr("c10"), jump("S1")])],
+            [tr("c22")],
+        ),
+        par([step("S25")], [step("S33")]),
+        tr("c38"),
+        jump("S4"),
+    ]
+
+
+def test_a_step_after_a_loop_back_into_a_branch_is_drawn_in_that_branch():
+    """S8 is not placed after the meeting point (the chart after it never reaches S8 but through S4, which the first
+    branch places). The rebuild once refused the graph: "a simultaneous divergence activates step S25, which is also
+    reached another way"."""
+    chart = SfcChart.model_validate({"elements": loop_back_into_a_branch()})
+    assert chart_graph(chart).problems == []
+    rebuilt, unreachable = graph_chart(*imported(chart))
+    assert unreachable == [] and edges(rebuilt) == edges(chart)
+    assert chart_graph(rebuilt).problems == []
+
+
+def test_an_alternative_whose_other_branch_loops_through_its_own_simultaneous_divergence_meets_after_it():
+    """In the first branch of P4, S5's alternative either goes on to S17 or opens S10 | S12, whose join jumps back
+    to S5: that join is no way out of the branch, so the alternative meets at S17, which ends the simultaneous branch
+    (the rebuild once drew S17 inside the alternative, leaving P4's branch without a last step)."""
+    loop = [tr("c8"), par([step("S10")], [step("S12")]), tr("c14"), jump("S5")]
+    start = [step("S1"), tr("c3"), par([step("S5"), alt([tr("c7")], loop), step("S17")], [step("S19")])]
+    for ending in ([], [tr("c21"), step("S22")]):  # the chart ends in the branches, or they join
+        chart = SfcChart.model_validate({"elements": [*start, *ending]})
+        assert chart_graph(chart).problems == []
+        rebuilt, unreachable = graph_chart(*imported(chart))
+        assert unreachable == [] and edges(rebuilt) == edges(chart)
+        assert chart_graph(rebuilt).problems == []
+
+
+def test_an_alternative_no_branch_of_which_reaches_the_tried_meeting_point_tries_the_next():
+    """S1's branches could meet at S17 (both reach it, and a jump goes to it) or at S45; at S17 no branch comes
+    together (the first jumps to it from inside, the second to S45), so S17 was kept for after the alternative but
+    never drawn (the rebuild once named it unreachable): they meet at S45."""
+    chart = SfcChart.model_validate(
+        {
+            "elements": [
+                step("S1"),
+                alt(
+                    [
+                        tr("c3"),
+                        step("S5"),
+                        alt([tr("c12"), step("S13"), tr("c15")], [tr("c16"), step("S17"), tr("c19")], [tr("c24")]),
+                    ],
+                    [tr("c32")],
+                ),
+                step("S45"),
+                alt([tr("c53")], [tr("c59"), jump("S17")]),
+                step("S63"),
+            ]
+        }
+    )
+    assert chart_graph(chart).problems == []
+    rebuilt, unreachable = graph_chart(*imported(chart))
+    assert unreachable == [] and edges(rebuilt) == edges(chart)
+    assert chart_graph(rebuilt).problems == []
+
+
+def test_a_simultaneous_branch_is_rebuilt_to_end_with_a_step():
+    """S5's alternative in the first branch of P4 could meet at S12 (both branches reach it) and go on with S12's
+    loop back to S5, but then the simultaneous branch would end with that jump (the rebuild once drew it so,
+    SFC-UNSAFE): it meets at S8 and the branch ends with S28, as drawn."""
+    loop = alt([tr("c10")], [tr("c11"), step("S12"), tr("c14"), jump("S5")])
+    first = [step("S5"), alt([tr("c7"), step("S8"), loop], [tr("c25"), jump("S12")]), step("S28")]
+    chart = SfcChart.model_validate({"elements": [step("S1"), tr("c3"), par(first, [step("S30")])]})
+    assert chart_graph(chart).problems == []
+    rebuilt, unreachable = graph_chart(*imported(chart))
+    assert unreachable == [] and edges(rebuilt) == edges(chart)
+    assert chart_graph(rebuilt).problems == []

@@ -21,6 +21,7 @@ from tests.support import EXAMPLES
 
 from .strategies import sfc_bodies
 from .support import build
+from .test_graph import loop_back_into_a_branch
 
 
 def sfc_project(body: dict) -> Project:
@@ -122,6 +123,15 @@ def test_without_ladderlab_data_an_sfc_pou_runs_the_same(body, seeds):
             )
         traces.append(trace)
     assert traces[0] == traces[1]
+
+
+def test_a_chart_whose_join_jumps_back_into_an_alternative_branch_imports_without_ladderlab_data():
+    """Found by the round trips above: the import refused the file ("a simultaneous divergence activates step S25,
+    which is also reached another way") though LadderLab drew it."""
+    project = sfc_project({"chart": {"elements": loop_back_into_a_branch()}, "actions": [], "transitions": []})
+    result = import_plcopen(strip_ladderlab(export_plcopen(project)))
+    assert [d.format() for d in result.diagnostics] == []
+    assert semantics(result.project.pous[0].body) == semantics(project.pous[0].body)
 
 
 @given(sfc_bodies())

@@ -13,7 +13,8 @@ and jumps to named steps for loops; a graph no chart can draw is refused with th
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Iterable, Iterator
+from contextlib import contextmanager
 from dataclasses import dataclass, field
 
 from .sfc import SfcAlternative, SfcChart, SfcElement, SfcJump, SfcParallel, SfcStep, SfcTransition, walk
@@ -292,6 +293,7 @@ class _Rebuilder:
                 raise UnstructuredChart(f"transition {t.transition.id} must come from a step and lead to a step")
         self.placed: set[str] = set()
         self.used_transitions: set[int] = set()
+        self.simultaneous = False  # the sequence being built is a simultaneous branch (it must end with a step)
         taken = {s.step.id for s in steps} | {t.transition.id for t in transitions}
         self.ids = _IdMaker(taken)
 
@@ -306,6 +308,15 @@ class _Rebuilder:
             raise UnstructuredChart("the chart has no initial step")
         elements, _ = self.from_steps_position([initials[0]], frozenset())
         return SfcChart(elements=elements)
+
+    @contextmanager
+    def branches_of(self, simultaneous: bool) -> Iterator[None]:
+        """While the branches of a divergence are built (simultaneous or alternative ones)."""
+        outer, self.simultaneous = self.simultaneous, simultaneous
+        try:
+            yield
+        finally:
+            self.simultaneous = outer
 
     def unreachable(self) -> list[str]:
         return [s.step.name for name, s in self.steps.items() if name not in self.placed]
@@ -330,10 +341,11 @@ class _Rebuilder:
                     "another way"
                 )
         branches, ends = [], []
-        for name in targets:
-            branch, end = self.from_steps_position([name], reserved)
-            branches.append(branch)
-            ends.append(end)
+        with self.branches_of(simultaneous=True):
+            for name in targets:
+                branch, end = self.from_steps_position([name], reserved)
+                branches.append(branch)
+                ends.append(end)
         parallel = SfcParallel(id=self.ids.new("P"), branches=branches)
         joins = {end.join for end in ends}
         if joins == {None} and all(end.converge is None for end in ends):
@@ -409,28 +421,36 @@ class _Rebuilder:
         last: bool,
     ) -> tuple[list[SfcElement], _End] | None:
         """The alternative divergence of ``outs`` meeting at ``meet``; None when a branch would end with a step (a
-        chart's alternative branches end with a transition or a jump) and another meeting point may be tried."""
+        chart's alternative branches end with a transition or a jump), no branch reaches ``meet`` (nothing would
+        place the steps kept for after it) or the simultaneous branch it lies in would not end with a step, and
+        another meeting point may be tried."""
         inner = reserved | (self._downstream(meet, reserved) if meet else frozenset())
         branches, joined = [], False
-        for t in outs:
-            rest, end = self.from_steps_position(t.targets, inner, meet)
-            if end.join is not None:
-                raise UnstructuredChart(
-                    f"the alternative branch of transition {t.transition.id} ends a simultaneous branch the others "
-                    "do not"
-                )
-            if rest and isinstance(rest[-1], (SfcStep, SfcParallel)) and not last:
-                return None
-            joined = joined or end.converge is not None
-            branches.append([t.transition, *rest])
+        with self.branches_of(simultaneous=False):
+            for t in outs:
+                rest, end = self.from_steps_position(t.targets, inner, meet)
+                if end.join is not None:
+                    raise UnstructuredChart(
+                        f"the alternative branch of transition {t.transition.id} ends a simultaneous branch the "
+                        "others do not"
+                    )
+                if rest and isinstance(rest[-1], (SfcStep, SfcParallel)) and not last:
+                    return None
+                joined = joined or end.converge is not None
+                branches.append([t.transition, *rest])
         alternative = SfcAlternative(id=self.ids.new("A"), branches=branches)
-        if meet is None or not joined:
+        if meet is None:
             return [alternative], _End()
+        if not joined:
+            return None
         rest, end = self.from_steps_position(sorted(meet, key=list(self.steps).index), reserved, converge)
         final = end.join is None and end.converge is None  # (else what comes after is placed further out)
         if final and not last and not (inner - reserved) <= self.placed:
             return None  # a branch jumped to a step after the meeting point that the chart after it never places
-        return [alternative, *rest], end
+        drawn: list[SfcElement] = [alternative, *rest]
+        if final and not last and self.simultaneous and not isinstance(drawn[-1], (SfcStep, SfcParallel)):
+            return None  # the simultaneous branch would end with a jump: its join would wait for ever
+        return drawn, end
 
     def meeting_points(
         self, outs: list[ImportedTransition], reserved: frozenset[str], converge: frozenset[str] | None
@@ -478,9 +498,11 @@ class _Rebuilder:
 
     def _downstream(self, meet: frozenset[str], reserved: frozenset[str]) -> frozenset[str]:
         """The steps after an alternative's meeting point, which a branch reaching one jumps to (they are placed
-        after the alternative); not those that lead back to the meeting point (a loop): a branch places them."""
+        after the alternative); not those that lead back to the meeting point (a loop), nor those reached from the
+        meeting point only through such a step: a branch places them (after the loop's step)."""
         after = self._fresh_steps(meet, reserved - meet)
-        return meet | frozenset(name for name in after if name in meet or not self._leads_to(name, meet, reserved))
+        loops = frozenset(name for name in after if name not in meet and self._leads_to(name, meet, reserved))
+        return meet | frozenset(self._fresh_steps(meet, (reserved - meet) | loops))
 
     def _leads_to(self, name: str, meet: frozenset[str], reserved: frozenset[str]) -> bool:
         blocked = (self.placed | reserved) - meet
@@ -498,14 +520,18 @@ class _Rebuilder:
         return False
 
     def _escapes(self, start: list[str], reserved: frozenset[str], converge: frozenset[str] | None) -> bool:
-        """Does a branch lead somewhere new (a last step, where its enclosing alternative meets, a join) rather
-        than only back to steps already placed?"""
+        """Does a branch lead somewhere new (a last step, where its enclosing alternative meets, the join of an
+        enclosing simultaneous divergence) rather than only back to steps already placed? (The join of a
+        simultaneous divergence the branch itself opens, all of whose steps it reaches, is no way out.)"""
         if frozenset(start) == converge:
             return True
-        for name in self._fresh_steps(start, reserved):
+        fresh = self._fresh_steps(start, reserved)
+        for name in fresh:
             leaving = [t for t in self.transitions if name in t.sources]
-            if not leaving or any(frozenset(t.targets) == converge or len(t.sources) > 1 for t in leaving):
-                return True  # a last step, the enclosing meeting point, the join of a simultaneous divergence
+            if not leaving or any(
+                frozenset(t.targets) == converge or not set(t.sources) <= set(fresh) for t in leaving
+            ):
+                return True  # a last step, the enclosing meeting point, the join of an enclosing divergence
         return False
 
     def _reachable(
