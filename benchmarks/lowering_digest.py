@@ -33,7 +33,8 @@ NETWORKS = (1, 7, 100, 2003)
 RANDOM_PROJECTS = 400
 _CHILD = "LADDERLAB_DIGEST_CHILD"
 _ADDRESS = re.compile(r" at 0x[0-9a-f]+")  # an object's default repr (the checker's ERROR type): not an outcome
-_LIBRARY = """TYPE MyStruct : STRUCT x : INT; END_STRUCT; END_TYPE
+#: the POUs and types the random declarations use (tests/st/test_declaration_checks.py declares against them too)
+LIBRARY = """TYPE MyStruct : STRUCT x : INT; END_STRUCT; END_TYPE
 FUNCTION_BLOCK Fb
 VAR_INPUT n : INT := 1; END_VAR
 END_FUNCTION_BLOCK
@@ -57,7 +58,7 @@ _KINDS = ["VAR", "VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT", "VAR_TEMP", "VAR CONST
 
 
 def random_source(rng: random.Random) -> str:
-    """A program or function block of random declarations (``_NAMES``, ``_TYPES``...) after ``_LIBRARY``."""
+    """A program or function block of random declarations (``_NAMES``, ``_TYPES``...) after ``LIBRARY``."""
     blocks = []
     for _ in range(rng.randint(1, 3)):
         decls = []
@@ -69,7 +70,7 @@ def random_source(rng: random.Random) -> str:
                 decls.append(f"{names} : {rng.choice(_TYPES)}{rng.choice(_EXTRAS)};")
         blocks.append(f"{rng.choice(_KINDS)}\n  " + "\n  ".join(decls) + "\nEND_VAR")
     kind = rng.choice(["PROGRAM", "FUNCTION_BLOCK"])
-    return _LIBRARY + f"{kind} Main\n" + "\n".join(blocks) + f"\n;\nEND_{kind}\n"
+    return LIBRARY + f"{kind} Main\n" + "\n".join(blocks) + f"\n;\nEND_{kind}\n"
 
 
 def digest(project: Any) -> dict[str, Any] | str:

@@ -10,6 +10,7 @@ from __future__ import annotations
 import re
 
 import pytest
+from benchmarks.lowering_digest import LIBRARY
 from hypothesis import given
 from hypothesis import strategies as st
 
@@ -18,24 +19,10 @@ from ladderlab.st.checker import check_project
 from ladderlab.st.project_text import source_to_project
 from tests.support import fuzz_settings
 
-LIBRARY = """TYPE Pair : STRUCT x : INT; END_STRUCT; END_TYPE
-FUNCTION_BLOCK Plain
-VAR_INPUT n : INT := 1; END_VAR
-END_FUNCTION_BLOCK
-FUNCTION_BLOCK ABSTRACT Shape
-END_FUNCTION_BLOCK
-FUNCTION_BLOCK Counted
-VAR n : INT; END_VAR
-METHOD FB_init : BOOL
-VAR_INPUT bInitRetains : BOOL; bInCopyCode : BOOL; n : INT; END_VAR
-END_METHOD
-END_FUNCTION_BLOCK
-VAR_GLOBAL a : BOOL; q : INT; END_VAR
-"""
 NAMES = st.sampled_from(["a", "b", "Start", "x_1", "q", "x__y", "ends_", "INT", "T1"])
 TYPES = st.sampled_from(
-    ["BOOL", "int", "LREAL", "TON", "Pair", "Plain", "Shape", "Counted", "Counted(n := 2)", "Plain(3)", "Unknown"]
-    + ["POINTER TO INT", "STRING[5]", "ARRAY [0..1] OF Counted[(n := 1), (n := 2)]"]
+    ["BOOL", "int", "LREAL", "TON", "MyStruct", "Fb", "Abstract", "Fb2", "Fb2(n := 2)", "Fb(3)", "Unknown"]
+    + ["POINTER TO INT", "STRING[5]", "ARRAY [0..1] OF Fb2[(n := 1), (n := 2)]"]
 )
 EXTRAS = st.sampled_from(["", "", "", " := TRUE", " := 3"])
 KINDS = st.sampled_from(
