@@ -83,7 +83,7 @@ def test_only_plain_elementary_declarations_are_left_unchecked(monkeypatch: pyte
         return answers[decl.names[0].name]
 
     monkeypatch.setattr(checker, "_nothing_to_check", recorded)
-    declarations = "VAR a, b : BOOL; c : INT := 1; d : Plain; e : BOOL R_EDGE; END_VAR VAR CONSTANT k : INT; END_VAR"
+    declarations = "VAR a, b : BOOL; c : INT := 1; d : Fb; e : BOOL R_EDGE; END_VAR VAR CONSTANT k : INT; END_VAR"
     _checked(LIBRARY + f"PROGRAM Main\n{declarations}\n;\nEND_PROGRAM\n")
     assert {name: answers[name] for name in "acdek"} == {"a": True, "c": False, "d": False, "e": False, "k": False}
 
