@@ -76,16 +76,16 @@ def line_of(text: str, statement: str) -> int:
     return line
 
 
-def ld_shapes_project(declarations: str, networks: list[list[object]], element) -> object:
+def ld_shapes_project(declarations: str, networks: list[list[tuple[str, str, str]]]) -> object:
     """A project whose program Main (declaring ``declarations``, with the global G1) holds one LD network per entry
-    of ``networks``, each element made by ``element(network number, element number, spec)``: the repeated-shape
-    programs of the template tests (tests/engine/test_block_templates.py, tests/ir/test_ld_templates.py)."""
+    of ``networks``, each element made by ``ld_shape_element`` from its spec: the repeated-shape programs of the
+    template tests (tests/engine/test_block_templates.py, tests/ir/test_ld_templates.py)."""
     from ladderlab.model import ld
     from ladderlab.model.project import Pou, Project, Task
 
     body = ld.LdBody(
         networks=[
-            ld.LdNetwork(id=f"n{n}", elements=[element(n, k, spec) for k, spec in enumerate(elements)])
+            ld.LdNetwork(id=f"n{n}", elements=[ld_shape_element(n, k, spec) for k, spec in enumerate(elements)])
             for n, elements in enumerate(networks)
         ]
     )
@@ -96,3 +96,30 @@ def ld_shapes_project(declarations: str, networks: list[list[object]], element) 
         globals="VAR_GLOBAL G1 : BOOL; END_VAR",
         tasks=[Task(name="main", interval="T#10ms", programs=["Main"])],
     )
+
+
+def ld_shape_element(n: int, k: int, spec: tuple[str, str, str]) -> object:
+    """Element ``k`` of network ``n`` from ``(kind, a, b)``: a contact or coil on ``a`` in mode ``b``, ``a < b``, a TON
+    ``a`` with PT ``b``, ``a := a + b`` with EN, two parallel contacts (``a``, NOT ``b``), or (``fed``) a TON ``a`` whose
+    IN is a contact of its own on ``b``."""
+    from ladderlab.model import ld
+
+    kind, a, b = spec
+    ident = f"e{n}_{k}"
+    if kind == "contact":
+        return ld.Contact(id=ident, var=a, mode=b)  # type: ignore[arg-type]
+    if kind == "coil":
+        return ld.Coil(id=ident, var=a, mode=b)  # type: ignore[arg-type]
+    if kind == "compare":
+        return ld.Compare(id=ident, op="LT", left=a, right=b)
+    if kind == "ton":
+        return ld.Box(id=ident, call="TON", instance=a, inputs={"PT": b})
+    if kind == "add":
+        return ld.Box(id=ident, call="ADD", en=True, inputs={"IN1": a, "IN2": b}, outputs={"OUT": a})
+    if kind == "parallel":
+        return ld.Parallel(
+            id=ident,
+            branches=[[ld.Contact(id=f"{ident}a", var=a)], [ld.Contact(id=f"{ident}b", var=b, mode="nc")]],
+        )
+    assert kind == "fed", kind
+    return ld.Box(id=ident, call="TON", instance=a, inputs={"IN": [ld.Contact(id=f"{ident}i", var=b)], "PT": "T#2ms"})

@@ -56,27 +56,13 @@ element = st.one_of(
 )
 
 
-def _element(n: int, k: int, spec: tuple[str, str, str]) -> ld.LdElement:
-    kind, a, b = spec
-    ident = f"e{n}_{k}"
-    if kind == "contact":
-        return ld.Contact(id=ident, var=a, mode=b)  # type: ignore[arg-type]
-    if kind == "coil":
-        return ld.Coil(id=ident, var=a, mode=b)  # type: ignore[arg-type]
-    if kind == "compare":
-        return ld.Compare(id=ident, op="LT", left=a, right=b)
-    if kind == "ton":
-        return ld.Box(id=ident, call="TON", instance=a, inputs={"PT": b})
-    return ld.Box(id=ident, call="ADD", en=True, inputs={"IN1": a, "IN2": b}, outputs={"OUT": a})
-
-
 def _project(networks: list[list[tuple[str, str, str]]]) -> Project:
     filler = " ".join(f"F{i}," for i in range(PAGE_SIZE))  # P0 and P1 on the second page of slots
     declarations = (
         f"VAR\n  {', '.join(BOOLS)} : BOOL; I0, I1 : INT; T0, T1 : TON;\n  {filler} P0, P1 : BOOL;\nEND_VAR\n"
         "VAR_EXTERNAL G1 : BOOL; END_VAR"
     )
-    return ld_shapes_project(declarations, networks, _element)
+    return ld_shapes_project(declarations, networks)
 
 
 @settings(max_examples=int(os.environ.get("TEMPLATE_EXAMPLES", "25")), deadline=None)

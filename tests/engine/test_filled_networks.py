@@ -24,7 +24,7 @@ from ladderlab.engine.codegen.layout import PAGE_SIZE
 from ladderlab.ir import nodes as ir
 from ladderlab.ir.lower_project import lower_project
 from ladderlab.model.project import Project
-from tests.engine.test_block_templates import _element, _project  # (the same program of LD networks)
+from tests.engine.test_block_templates import _project  # (the same program of LD networks)
 from tests.support import ld_shapes_project
 
 #: the pools the variables rotate in: the last BOOLs live on the second page of slots
@@ -104,7 +104,7 @@ def _paged_project(networks: list[list[tuple[str, str, str]]]) -> Project:
         f"VAR\n  B0, B1 : BOOL; I0, I1 : INT; T0, T1 : TON;\n  {fillers[0]} P0, P1 : BOOL;\n  {fillers[1]} Q0, Q1 : BOOL;\n"
         "END_VAR\nVAR_EXTERNAL G1 : BOOL; END_VAR"
     )
-    return ld_shapes_project(declarations, networks, _element)  # type: ignore[return-value]
+    return ld_shapes_project(declarations, networks)  # type: ignore[return-value]
 
 
 @settings(max_examples=int(os.environ.get("TEMPLATE_EXAMPLES", "25")), deadline=None)

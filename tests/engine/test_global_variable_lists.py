@@ -8,12 +8,15 @@ with a global's name has priority in its POU)."""
 
 from __future__ import annotations
 
+from functools import partial
+
 import pytest
 
 from ladderlab.engine.paths import UnknownPath
 from ladderlab.model import GlobalVariableList, Pou, Project, Task
 from ladderlab.simulation.build import build_project
 from ladderlab.simulation.xref import cross_reference
+from tests.engine.gvl_support import gvl_errors, gvl_project, gvl_simulation, st
 from tests.ir.diagram_support import coil, contact, fbd_pou, inp, ld_pou, net, out, rung
 from tests.sfc.support import jump, sfc_pou, step, tr
 
@@ -25,25 +28,9 @@ IO = GlobalVariableList(
 PLAIN = GlobalVariableList(name="GVL", text="VAR_GLOBAL\n    counter : INT;\n    bLamp : BOOL;\nEND_VAR")
 
 
-def project(*pous: Pou, gvls: tuple[GlobalVariableList, ...] = (IO, PLAIN), globals: str = "") -> Project:
-    programs = [p.name for p in pous if p.kind == "program"]
-    return Project(
-        name="gvl", gvls=list(gvls), globals=globals, pous=list(pous), tasks=[Task(name="T", programs=programs)]
-    )
-
-
-def st(body: str, declarations: str = "") -> Pou:
-    return Pou(name="Main", kind="program", language="st", declarations=declarations, body=body)
-
-
-def simulation(*pous: Pou, **options):
-    built = build_project(project(*pous, **options))
-    assert [d.format() for d in built.diagnostics if d.severity == "error"] == []
-    return built.simulation()
-
-
-def errors(*pous: Pou, **options) -> list[str]:
-    return [d.format() for d in build_project(project(*pous, **options)).diagnostics if d.severity == "error"]
+project = partial(gvl_project, gvls=(IO, PLAIN))
+simulation = partial(gvl_simulation, gvls=(IO, PLAIN))
+errors = partial(gvl_errors, gvls=(IO, PLAIN))
 
 
 def test_qualified_names_read_and_write_the_lists_variables_in_st():

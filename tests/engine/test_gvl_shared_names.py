@@ -9,12 +9,14 @@ may have the name of one in another GVL; a local variable with a global's name h
 
 from __future__ import annotations
 
+from functools import partial
+
 import pytest
 
 from ladderlab.engine.paths import UnknownPath
-from ladderlab.model import GlobalVariableList, Pou, Project, Task
-from ladderlab.simulation.build import build_project
+from ladderlab.model import GlobalVariableList, Pou
 from ladderlab.simulation.xref import cross_reference
+from tests.engine.gvl_support import gvl_errors, gvl_project, gvl_simulation, st
 from tests.ir.diagram_support import coil, contact, fbd_pou, inp, ld_pou, net, out, rung
 from tests.sfc.support import jump, sfc_pou, step, tr
 
@@ -23,25 +25,9 @@ B = GlobalVariableList(name="GVL_B", qualified_only=True, text="VAR_GLOBAL\n    
 C = GlobalVariableList(name="GVL_C", text="VAR_GLOBAL\n    x : INT := 3;\nEND_VAR")
 
 
-def project(*pous: Pou, gvls=(A, B), globals: str = "") -> Project:
-    programs = [p.name for p in pous if p.kind == "program"]
-    return Project(
-        name="shared", gvls=list(gvls), globals=globals, pous=list(pous), tasks=[Task(name="T", programs=programs)]
-    )
-
-
-def st(body: str, declarations: str = "") -> Pou:
-    return Pou(name="Main", kind="program", language="st", declarations=declarations, body=body)
-
-
-def simulation(*pous: Pou, **options):
-    built = build_project(project(*pous, **options))
-    assert [d.format() for d in built.diagnostics if d.severity == "error"] == []
-    return built.simulation()
-
-
-def errors(*pous: Pou, **options) -> list[str]:
-    return [d.format() for d in build_project(project(*pous, **options)).diagnostics if d.severity == "error"]
+project = partial(gvl_project, gvls=(A, B))
+simulation = partial(gvl_simulation, gvls=(A, B))
+errors = partial(gvl_errors, gvls=(A, B))
 
 
 def test_each_list_keeps_its_own_variable_and_initial_value_in_st():

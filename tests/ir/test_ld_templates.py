@@ -84,34 +84,12 @@ series = st.lists(
 )
 
 
-def _element(n: int, k: int, spec: tuple[str, str, str]) -> ld.LdElement:
-    kind, a, b = spec
-    ident = f"e{n}_{k}"
-    if kind == "contact":
-        return ld.Contact(id=ident, var=a, mode=b)  # type: ignore[arg-type]
-    if kind == "coil":
-        return ld.Coil(id=ident, var=a, mode=b)  # type: ignore[arg-type]
-    if kind == "compare":
-        return ld.Compare(id=ident, op="LT", left=a, right=b)
-    if kind == "ton":
-        return ld.Box(id=ident, call="TON", instance=a, inputs={"PT": b})
-    if kind == "add":
-        return ld.Box(id=ident, call="ADD", en=True, inputs={"IN1": a, "IN2": b}, outputs={"OUT": a})
-    if kind == "parallel":
-        return ld.Parallel(
-            id=ident,
-            branches=[[ld.Contact(id=f"{ident}a", var=a)], [ld.Contact(id=f"{ident}b", var=b, mode="nc")]],
-        )
-    fed = [ld.Contact(id=f"{ident}i", var=b)]
-    return ld.Box(id=ident, call="TON", instance=a, inputs={"IN": fed, "PT": "T#2ms"})
-
-
 def _project(networks: list[list[tuple[str, str, str]]]) -> Project:
     declarations = (
         f"VAR\n  {', '.join(BOOLS)} : BOOL; I0, I1 : INT; T0, T1 : TON;\nEND_VAR\n"
         "VAR CONSTANT K1 : BOOL := TRUE; K2 : INT := 3; END_VAR\nVAR_EXTERNAL G1 : BOOL; END_VAR"
     )
-    return ld_shapes_project(declarations, networks, _element)
+    return ld_shapes_project(declarations, networks)
 
 
 @settings(max_examples=int(os.environ.get("TEMPLATE_EXAMPLES", "30")), deadline=None)
