@@ -16,7 +16,8 @@ from __future__ import annotations
 
 import bisect
 import re
-from collections.abc import Iterator, Sequence
+from collections.abc import Callable, Iterator, Sequence
+from dataclasses import dataclass
 from typing import Any
 
 from ..model.diagnostics import Diagnostic
@@ -111,19 +112,8 @@ def misplaced_call_after_init(
     instance runs."""
     if "call_after_init" not in text.lower():
         return []
-    starts = _line_starts(text)
-    found = []
-    for pragma in _pragmas(text, _CALL_AFTER_INIT):
-        if place == "declarations" and _skip(text, 0) >= pragma.end():
-            continue
-        if place == "source" and _HEADER.match(text, _skip(text, pragma.end())):
-            line = _position(starts, pragma.start())[0]
-            if not any(first <= line <= last for first, last in interfaces):
-                continue
-            found.append(_at(pragma, starts, misplaced_diagnostic(file, pou, "on a method of an INTERFACE")))
-            continue
-        found.append(_at(pragma, starts, misplaced_diagnostic(file, pou)))
-    return found
+    where = _Misplaced(_CALL_AFTER_INIT, _HEADER, misplaced_diagnostic, "on a method of an INTERFACE")
+    return where.find(text, file, pou, place, interfaces)
 
 
 def misplaced_monitoring(
@@ -135,19 +125,37 @@ def misplaced_monitoring(
     prototype of an INTERFACE (``interfaces``: their first and last lines), which has no value."""
     if "monitoring" not in text.lower():
         return []
-    starts = _line_starts(text)
-    found = []
-    for pragma in _pragmas(text, _MONITORING):
-        if place == "declarations" and _skip(text, 0) >= pragma.end():
-            continue
-        if place == "source" and _PROPERTY.match(text, _skip(text, pragma.end())):
-            line = _position(starts, pragma.start())[0]
-            if not any(first <= line <= last for first, last in interfaces):
+    where = _Misplaced(_MONITORING, _PROPERTY, monitoring_misplaced, "on a property of an INTERFACE")
+    return where.find(text, file, pou, place, interfaces)
+
+
+@dataclass(frozen=True)
+class _Misplaced:
+    """Where an attribute that belongs at the head of a declarations text or above a ``header`` of a whole file
+    stands elsewhere: ``diagnostic(file, pou, why)`` at each such ``pragma``, ``interface`` the why of one above an
+    INTERFACE's prototype."""
+
+    pragma: re.Pattern[str]
+    header: re.Pattern[str]
+    diagnostic: Callable[[str | None, str | None, str], Diagnostic]
+    interface: str
+
+    def find(
+        self, text: str, file: str | None, pou: str | None, place: str, interfaces: Sequence[tuple[int, int]]
+    ) -> list[Diagnostic]:
+        starts = _line_starts(text)
+        found = []
+        for pragma in _pragmas(text, self.pragma):
+            if place == "declarations" and _skip(text, 0) >= pragma.end():
                 continue
-            found.append(_at(pragma, starts, monitoring_misplaced(file, pou, "on a property of an INTERFACE")))
-            continue
-        found.append(_at(pragma, starts, monitoring_misplaced(file, pou)))
-    return found
+            why = ""
+            if place == "source" and self.header.match(text, _skip(text, pragma.end())):
+                line = _position(starts, pragma.start())[0]
+                if not any(first <= line <= last for first, last in interfaces):
+                    continue
+                why = self.interface
+            found.append(_at(pragma, starts, self.diagnostic(file, pou, why)))
+        return found
 
 
 def monitoring_misplaced(file: str | None, pou: str | None, why: str = "") -> Diagnostic:
