@@ -548,19 +548,21 @@ class Simulation:
             self._stopped = (self._stamp, found)
 
     def _record_fault(self, error: Exception, task: str, now: float) -> None:
-        """``error`` as a located fault of ``task`` (a task's name, or what ran outside the tasks) at ``now``."""
-        self.faults.append(
-            make_fault(
-                error,
-                self.compiled.generated,
-                self.compiled.filename,
-                self._ns,
-                task=task,
-                time_ms=now,
-                scan=self.scan_count,
-                instance_path=self._instance_path,
-                places=self.compiled.program.places,
-            )
+        """Keep ``error`` in ``faults`` as a located fault of ``task`` (a task's name, or what ran outside the tasks)."""
+        self.faults.append(self._fault(error, task, now))
+
+    def _fault(self, error: Exception, task: str, now: float) -> Fault:
+        """``error`` as a located fault of ``task`` at ``now`` (where in the program, the instance, the values)."""
+        return make_fault(
+            error,
+            self.compiled.generated,
+            self.compiled.filename,
+            self._ns,
+            task=task,
+            time_ms=now,
+            scan=self.scan_count,
+            instance_path=self._instance_path,
+            places=self.compiled.program.places,
         )
 
     def _run_accessor(
@@ -586,17 +588,7 @@ class Simulation:
                 result = drained(result)
             return result
         except Exception as error:
-            fault = make_fault(
-                error,
-                self.compiled.generated,
-                self.compiled.filename,
-                self._ns,
-                task="monitoring",
-                time_ms=now,
-                scan=self.scan_count,
-                instance_path=self._instance_path,
-                places=self.compiled.program.places,
-            )
+            fault = self._fault(error, "monitoring", now)
             raise AccessorFault(f"{path}: its {kind} faulted: {fault.text()}", fault) from None
 
     # ------------------------------------------------------------------ outside the task configuration (tests)
@@ -632,17 +624,7 @@ class Simulation:
         except passthrough:
             raise
         except Exception as error:
-            return make_fault(
-                error,
-                self.compiled.generated,
-                self.compiled.filename,
-                self._ns,
-                task="",
-                time_ms=now,
-                scan=self.scan_count,
-                instance_path=self._instance_path,
-                places=self.compiled.program.places,
-            )
+            return self._fault(error, "", now)
         finally:
             self._watchdog.deadline = float("inf")
         return None
