@@ -548,10 +548,10 @@ class Simulation:
             self._stopped = (self._stamp, found)
 
     def _record_fault(self, error: Exception, task: str, now: float) -> None:
-        """Keep ``error`` in ``faults`` as a located fault of ``task`` (a task's name, or what ran outside the tasks)."""
-        self.faults.append(self._fault(error, task, now))
+        """Keep ``error`` in ``faults``, located, as a fault of ``task`` (a task's name, or what ran outside tasks)."""
+        self.faults.append(self._located_fault(error, task, now))
 
-    def _fault(self, error: Exception, task: str, now: float) -> Fault:
+    def _located_fault(self, error: Exception, task: str, now: float) -> Fault:
         """``error`` as a located fault of ``task`` at ``now`` (where in the program, the instance, the values)."""
         return make_fault(
             error,
@@ -588,7 +588,7 @@ class Simulation:
                 result = drained(result)
             return result
         except Exception as error:
-            fault = self._fault(error, "monitoring", now)
+            fault = self._located_fault(error, "monitoring", now)
             raise AccessorFault(f"{path}: its {kind} faulted: {fault.text()}", fault) from None
 
     # ------------------------------------------------------------------ outside the task configuration (tests)
@@ -624,7 +624,7 @@ class Simulation:
         except passthrough:
             raise
         except Exception as error:
-            return self._fault(error, "", now)
+            return self._located_fault(error, "", now)
         finally:
             self._watchdog.deadline = float("inf")
         return None
